@@ -1,0 +1,81 @@
+// A scene: everything a render (and later a mesh or the explorer) needs, as plain values that
+// travel by copy, so a server can hold many at once. The defaults, ranges and help of every
+// field are declared once, in the parameter table (parameters.cpp); use defaultScene() rather
+// than a default-constructed Scene, whose fields are merely zero.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "quaternion.h"
+#include "vecmath.h"
+
+namespace quaternia {
+
+using Color = Vector3d;  // linear RGB
+
+struct FractalSettings {
+    std::string formula;  // eq. 2.10 polynomial in z; the name c stands for `c` below
+    Quaternion c;         // (1, i, j, k)
+    int maxIterations = 0;
+    double bailout = 0;  // |z| > bailout escapes; 0 = the polynomial's own escape radius
+};
+
+// 4D -> 3D (slice.h): a 3D point p is drawn iff left * s(p) * right is in the set, where s(p) is
+// POV-Ray's slice embedding for hyperplane normal . q = distance, and the six plane angles are a
+// friendlier way to compose extra rotations into left and right.
+struct SliceSettings {
+    Quaternion normal;  // (x, y, z, w) components of the 4D hyperplane normal
+    double distance = 0;
+    Quaternion left, right;             // unit quaternions
+    std::array<double, 6> anglesDegrees{};  // planes 1i, 1j, 1k, ij, ik, jk
+};
+
+struct CameraSettings {
+    Point3d position, lookAt;
+    Vector3d up;  // POV-Ray's sky vector
+    double fovDegrees = 0;  // horizontal field of view
+};
+
+enum class MarchMethod { SphereTracing, FixedStep };
+
+struct RenderSettings {
+    int width = 0, height = 0;
+    int samples = 0;  // per pixel, stratified
+    MarchMethod method = MarchMethod::SphereTracing;
+    double step = 0;     // fixed-step delta (Algorithm 2), world units
+    double epsilon = 0;  // sphere tracing stops at epsilon * pixel footprint at distance t
+    int maxSteps = 0;    // per ray, for either marcher
+    int bitDepth = 0;    // 8 or 16 bits per PNG channel
+};
+
+enum class Shadows { None, Hard, Soft };
+enum class Coloring { OrbitTrap, Iteration, Solid };
+
+struct ShadingSettings {
+    Vector3d lightDirection;  // towards the key light, world space
+    Color lightColor;
+    Shadows shadows = Shadows::Soft;
+    double shadowSoftness = 0;  // penumbra sharpness k of DE soft shadows (bigger = harder)
+    Vector3d fillDirection;
+    Color fillColor;
+    double ambient = 0;
+    double ambientOcclusion = 0;  // strength in [0, 1]
+    double specular = 0;
+    double shininess = 0;
+    Coloring coloring = Coloring::OrbitTrap;
+    Color baseColor, accentColor;
+    Color backgroundTop, backgroundBottom;
+    double gamma = 0;
+    double exposure = 0;
+};
+
+struct Scene {
+    FractalSettings fractal;
+    SliceSettings slice;
+    CameraSettings camera;
+    RenderSettings render;
+    ShadingSettings shading;
+};
+
+}  // namespace quaternia

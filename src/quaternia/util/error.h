@@ -1,0 +1,23 @@
+// User errors: bad scene keys, values, formulas and paths. They carry the key (or what was bad)
+// and a one-line message, are thrown by the library and caught once at the boundary (the CLI's
+// main, later the server), which prints the message and exits with code 2. Invariant violations
+// are not user errors; they are checked with assertions in tests.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace quaternia {
+
+class UserError : public std::runtime_error {
+public:
+    // `key` names what was bad, e.g. "render.width", "fractal.formula" or an output path.
+    UserError(std::string key, const std::string& message)
+        : std::runtime_error(message), key_(std::move(key)) {}
+    const std::string& key() const { return key_; }
+
+private:
+    std::string key_;
+};
+
+}  // namespace quaternia
