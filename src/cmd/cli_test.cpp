@@ -1,0 +1,181 @@
+// The command line as a user meets it: bad input gives one line naming the problem, exit code 2
+// and no output file; good input writes a PNG and a summary.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace quaternia {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+    int exitCode;
+    std::string out, err;
+};
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+class Cli : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::path(::testing::TempDir()) /
+               ("quaternia_cli_" +
+                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    Run run(const std::string& arguments) {
+        std::string command = std::string(QUATERNIA_BINARY) + " " + arguments + " >" +
+                              (dir_ / "stdout").string() + " 2>" + (dir_ / "stderr").string() +
+                              " </dev/null";
+        int status = std::system(command.c_str());
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile(dir_ / "stdout"),
+                readFile(dir_ / "stderr")};
+    }
+    fs::path write(const std::string& name, const std::string& text) {
+        std::ofstream(dir_ / name) << text;
+        return dir_ / name;
+    }
+    std::string output() const { return (dir_ / "out.png").string(); }
+    // Nothing but the files the test made itself: no output, no temporary left behind.
+    void expectNoOutput() const {
+        for (const auto& entry : fs::directory_iterator(dir_)) {
+            std::string name = entry.path().filename().string();
+            EXPECT_TRUE(name == "stdout" || name == "stderr" || name.ends_with(".toml"))
+                << "left behind: " << name;
+        }
+    }
+    // One line on stderr, exit code 2, mentioning `needle`.
+    void expectUserError(const Run& r, const std::string& needle) {
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_NE(r.err.find(needle), std::string::npos) << "stderr: " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        expectNoOutput();
+    }
+
+    fs::path dir_;
+};
+
+const std::string kTiny = " --width 24 --height 18 --set render.samples=1 --threads 2";
+
+TEST_F(Cli, RendersDefaultSceneWithSummary) {
+    Run r = run("render -o " + output() + kTiny);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(output()));
+    EXPECT_NE(r.out.find("24x18"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("rays/s"), std::string::npos) << r.out;
+    std::string png = readFile(output());
+    ASSERT_GT(png.size(), 8u);
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+    EXPECT_TRUE(r.err.empty()) << "no progress bar when stderr is not a terminal: " << r.err;
+}
+
+TEST_F(Cli, PrintsJsonSummary) {
+    Run r = run("render --json -o " + output() + kTiny + " --depth " + (dir_ / "d.png").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out.front(), '{');
+    for (const char* key : {"\"width\": 24", "\"height\": 18", "\"rays\": 432",
+                            "\"rays_per_second\"", "\"seconds\"", "\"depth_output\""}) {
+        EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
+    }
+    EXPECT_TRUE(fs::exists(dir_ / "d.png"));
+}
+
+TEST_F(Cli, SceneFileAndOverridesApply) {
+    fs::path scene =
+        write("scene.toml", "[fractal]\nformula = \"z^3 + c\"\nc = [-0.5, 0.5, 0, 0]\n");
+    Run r = run("render " + scene.string() + " --json -o " + output() + kTiny +
+                " --set fractal.max_iterations=9");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("\"formula\": \"z^3 + c\""), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, HelpListsEveryKeyWithDefault) {
+    for (const char* args : {"--help", "render --help"}) {
+        Run r = run(args);
+        EXPECT_EQ(r.exitCode, 0);
+        for (const char* key : {"fractal.formula", "fractal.c", "slice.left", "camera.fov",
+                                "render.epsilon", "render.method", "shading.ambient_occlusion"}) {
+            EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << args;
+        }
+        EXPECT_NE(r.out.find("z^2 + c"), std::string::npos);
+    }
+    EXPECT_NE(run("render --help").out.find("--threads"), std::string::npos);
+}
+
+TEST_F(Cli, MalformedTomlIsOneLineError) {
+    fs::path scene = write("bad.toml", "[render]\nwidth = = 3\n");
+    expectUserError(run("render " + scene.string() + " -o " + output()), "bad.toml:2");
+}
+
+TEST_F(Cli, UnknownKeyIsNamedWithSuggestion) {
+    fs::path scene = write("typo.toml", "[render]\nwidht = 30\n");
+    Run r = run("render " + scene.string() + " -o " + output());
+    expectUserError(r, "render.widht");
+    EXPECT_NE(r.err.find("render.width"), std::string::npos);
+}
+
+TEST_F(Cli, OutOfRangeSizesAreRefused) {
+    expectUserError(run("render -o " + output() + " --width -5"), "render.width");
+    expectUserError(run("render -o " + output() + " --width 0"), "render.width");
+    expectUserError(run("render -o " + output() + " --height 20000"), "render.height");
+    expectUserError(run("render -o " + output() + " --set render.width=16385"), "render.width");
+}
+
+TEST_F(Cli, IterationLimitIsEnforced) {
+    expectUserError(run("render -o " + output() + " --set fractal.max_iterations=1000000000"),
+                    "fractal.max_iterations");
+}
+
+TEST_F(Cli, NanAndInfinityAreRefused) {
+    expectUserError(run("render -o " + output() + " --set fractal.bailout=nan"), "fractal.bailout");
+    expectUserError(run("render -o " + output() + " --set 'fractal.c=[0, inf, 0, 0]'"),
+                    "fractal.c");
+    expectUserError(run("render -o " + output() + " --set camera.fov=-inf"), "camera.fov");
+}
+
+TEST_F(Cli, UnparsableFormulaNamesColumn) {
+    Run r = run("render -o " + output() + " --set 'fractal.formula=\"z^2 + * c\"'");
+    expectUserError(r, "fractal.formula");
+    EXPECT_NE(r.err.find("column 7"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, PossiblyUnboundedFormulaIsRefused) {
+    expectUserError(
+        run("render -o " + output() +
+            " --set 'fractal.formula=\"z i z - i z^2 + c\"' --set 'fractal.c=[0.1, 0.2, 0, 0]'"),
+        "fractal.formula");
+}
+
+TEST_F(Cli, UnwritableOutputIsRefusedBeforeRendering) {
+    Run r = run("render -o " + (dir_ / "missing" / "out.png").string() + kTiny);
+    expectUserError(r, "missing/out.png");
+}
+
+TEST_F(Cli, MissingSceneFileIsNamed) {
+    expectUserError(run("render " + (dir_ / "nope.toml").string() + " -o " + output()),
+                    "nope.toml");
+}
+
+TEST_F(Cli, BadOptionValueIsOneLineError) {
+    Run r = run("render -o " + output() + " --width abc");
+    expectUserError(r, "--width");
+    expectUserError(run("render -o " + output() + " --set novalue"), "--set");
+    expectUserError(run("render -o " + output() + " --threads -3"), "--threads");
+}
+
+}  // namespace
+}  // namespace quaternia

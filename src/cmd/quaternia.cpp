@@ -1,1 +1,48 @@
-int main() { return 0; }
+// quaternia: the command line. This is the boundary where user errors become one line on
+// standard error and exit code 2; the library below never prints and never exits.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "quaternia/parameters.h"
+#include "quaternia/util/error.h"
+#include "render_command.h"
+
+int main(int argc, char** argv) {
+    using namespace quaternia;
+    CLI::App app(
+        "Quaternia: quaternion Julia sets, sliced from 4D into 3D, ray marched with "
+        "distance estimation, shaded and exported.",
+        "quaternia");
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "quaternia 0.1.0");
+    app.footer(
+        "Run `quaternia render --help` for the render options.\n\nScene keys (scene file "
+        "sections, or --set section.key=value):\n" +
+        parameterHelp());
+    RenderCommandOptions renderOptions;
+    addRenderCommand(app, renderOptions);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "quaternia: error: %s (see quaternia --help)\n", e.what());
+        return 2;
+    }
+    try {
+        if (app.got_subcommand("render")) return runRenderCommand(renderOptions);
+    } catch (const UserError& e) {
+        std::fprintf(stderr, "quaternia: error: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "quaternia: internal error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,28 @@
+#include "camera.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace quaternia {
+
+Camera::Camera(const CameraSettings& settings, int width, int height)
+    : position_(settings.position), width_(width), height_(height) {
+    Vector3d forward = normalize(settings.lookAt - settings.position);
+    // cross(sky, f) with the ordinary formula gives POV-Ray's right vector: the scene is
+    // left-handed, x to the right, y up, z into the screen.
+    Vector3d rightUnit = normalize(cross(settings.up, forward));
+    Vector3d upUnit = cross(forward, rightUnit);
+    right_ = rightUnit * (double(width) / double(height));
+    up_ = upUnit;
+    double halfAngle = settings.fovDegrees * std::numbers::pi / 360.0;
+    direction_ = forward * (length(right_) / (2.0 * std::tan(halfAngle)));
+    pixelAngle_ = 2.0 * std::tan(halfAngle) / double(width);
+}
+
+Ray Camera::generateRay(double x, double y) const {
+    double x0 = x / width_ - 0.5;
+    double y0 = 0.5 - y / height_;
+    return Ray{position_, normalize(direction_ + right_ * x0 + up_ * y0)};
+}
+
+}  // namespace quaternia

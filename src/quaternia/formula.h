@@ -22,12 +22,12 @@ namespace quaternia {
 
 // A parse error at a 1-based column, with what was expected there.
 class FormulaError : public std::runtime_error {
-public:
+  public:
     FormulaError(int column, const std::string& message)
         : std::runtime_error(message), column_(column) {}
     int column() const { return column_; }
 
-private:
+  private:
     int column_;
 };
 
@@ -35,7 +35,7 @@ struct FormulaNode;  // the parsed expression tree (formula.cpp)
 
 // A parsed formula: cheap to copy, expanded into a Polynomial once c is known.
 class Formula {
-public:
+  public:
     // Throws FormulaError, whose message reads like
     // "column 7: expected a number, i, j, k, z, c or '(' but found ')'".
     static Formula parse(std::string_view text);
@@ -47,7 +47,7 @@ public:
     bool usesC() const;
     const std::string& text() const { return text_; }
 
-private:
+  private:
     std::string text_;
     std::shared_ptr<const FormulaNode> root_;
 };

@@ -1,0 +1,71 @@
+#include "march.h"
+
+#include <cmath>
+
+namespace quaternia {
+
+std::optional<RayInterval> intersectSphere(const Ray& ray, double radius) {
+    // |o + t d|^2 = r^2 with |d| = 1: t^2 + 2 b t + c = 0.
+    double b = dot(ray.origin, ray.direction);
+    double c = dot(ray.origin, ray.origin) - radius * radius;
+    double discriminant = b * b - c;
+    if (discriminant < 0) return std::nullopt;
+    double root = std::sqrt(discriminant);
+    double tFar = -b + root;
+    if (tFar < 0) return std::nullopt;
+    return RayInterval{std::max(0.0, -b - root), tFar};
+}
+
+MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
+    MarchResult result;
+    auto interval = intersectSphere(ray, fractal.boundingRadius());
+    if (!interval) return result;
+    double t = interval->tNear;
+    while (t <= interval->tFar && result.steps < settings.maxSteps) {
+        Point3d p = ray.at(t);
+        DistanceEstimate e = fractal.estimate(p);
+        ++result.steps;
+        result.iterations += e.iterations;
+        double epsilon = settings.epsilon * settings.pixelAngle * t;
+        if (e.inside || e.distance < epsilon) {
+            result.hit = Hit{t, p, p, e};
+            return result;
+        }
+        t += e.distance;
+    }
+    return result;
+}
+
+MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
+    MarchResult result;
+    auto interval = intersectSphere(ray, fractal.boundingRadius());
+    if (!interval) return result;
+    double tOutside = interval->tNear;
+    for (double t = interval->tNear; t <= interval->tFar && result.steps < settings.maxSteps;
+         t += settings.step) {
+        ++result.steps;
+        if (!fractal.contains(ray.at(t))) {
+            tOutside = t;
+            continue;
+        }
+        // Bisect between the last outside and the first inside sample to a thousandth of the
+        // step, so that depth and normals do not show the sampling grid.
+        double tInside = t;
+        for (int k = 0; k < 10 && tInside > tOutside; ++k) {
+            double middle = 0.5 * (tOutside + tInside);
+            ++result.steps;
+            (fractal.contains(ray.at(middle)) ? tInside : tOutside) = middle;
+        }
+        Point3d outside = ray.at(tOutside);
+        result.hit = Hit{tInside, ray.at(tInside), outside, fractal.estimate(outside)};
+        return result;
+    }
+    return result;
+}
+
+MarchResult march(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
+    return settings.method == MarchMethod::FixedStep ? fixedStepMarch(fractal, ray, settings)
+                                                     : sphereTrace(fractal, ray, settings);
+}
+
+}  // namespace quaternia

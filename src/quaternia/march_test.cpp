@@ -1,0 +1,95 @@
+#include "march.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "camera.h"
+#include "test_scenes.h"
+
+namespace quaternia {
+namespace {
+
+using testing::referenceScene;
+using testing::unitBallScene;
+
+TEST(IntersectSphere, FindsEntryAndExit) {
+    auto interval = intersectSphere(Ray{{0, 0, -3}, {0, 0, 1}}, 1.0);
+    ASSERT_TRUE(interval);
+    EXPECT_DOUBLE_EQ(interval->tNear, 2);
+    EXPECT_DOUBLE_EQ(interval->tFar, 4);
+    EXPECT_FALSE(intersectSphere(Ray{{0, 2, -3}, {0, 0, 1}}, 1.0));
+    EXPECT_FALSE(intersectSphere(Ray{{0, 0, 3}, {0, 0, 1}}, 1.0));
+    auto inside = intersectSphere(Ray{{0, 0, 0}, {1, 0, 0}}, 1.0);
+    ASSERT_TRUE(inside);
+    EXPECT_DOUBLE_EQ(inside->tNear, 0);
+}
+
+// c = 0 is the unit ball: a ray from (0, 0, -3) towards the origin meets it at t = 2, where the
+// normal is the position itself.
+TEST(SphereTrace, HitsUnitBallAtTwoWithRadialNormal) {
+    Fractal fractal = Fractal::fromScene(unitBallScene(64, 64));
+    MarchSettings settings;
+    settings.pixelAngle = 1e-3;
+    settings.epsilon = 0.25;
+    MarchResult result = sphereTrace(fractal, Ray{{0, 0, -3}, {0, 0, 1}}, settings);
+    ASSERT_TRUE(result.hit);
+    double epsilon = settings.epsilon * settings.pixelAngle * result.hit->t;
+    // The hit lies outside by less than the distance the estimate allows: d >= 0.5 (r - 1).
+    EXPECT_LE(result.hit->t, 2.0);
+    EXPECT_GE(result.hit->t, 2.0 - 2 * epsilon);
+    Vector3d normal = fractal.normal(result.hit->outside);
+    EXPECT_NEAR(normal.x, 0, 1e-9);
+    EXPECT_NEAR(normal.y, 0, 1e-9);
+    EXPECT_NEAR(normal.z, -1, 1e-9);
+    // Off axis too: the normal is the hit position, normalised.
+    Ray oblique{{0, 0, -3}, normalize(Vector3d(0.2, 0.1, 1))};
+    MarchResult other = sphereTrace(fractal, oblique, settings);
+    ASSERT_TRUE(other.hit);
+    Vector3d radial = normalize(other.hit->position);
+    EXPECT_NEAR(dot(fractal.normal(other.hit->outside), radial), 1, 1e-9);
+    EXPECT_NEAR(length(other.hit->position), 1, 1e-3);
+}
+
+TEST(FixedStepMarch, HitsUnitBallAtTwo) {
+    Fractal fractal = Fractal::fromScene(unitBallScene(64, 64));
+    MarchSettings settings;
+    settings.method = MarchMethod::FixedStep;
+    settings.step = 0.01;
+    MarchResult result = march(fractal, Ray{{0, 0, -3}, {0, 0, 1}}, settings);
+    ASSERT_TRUE(result.hit);
+    EXPECT_NEAR(result.hit->t, 2.0, 0.01 / 512);
+    EXPECT_FALSE(fixedStepMarch(fractal, Ray{{0, 0, -3}, {0, 1, 0}}, settings).hit);
+}
+
+// The distance estimate must never carry the marcher past the set: wherever fine fixed steps
+// find a member, sphere tracing stops no later.
+TEST(SphereTrace, NeverOvershootsFirstMember) {
+    for (const char* id : {"case01_sqr_A", "case06_sqr_A_tilt", "case08_cube_F"}) {
+        Scene scene = referenceScene(id);
+        Fractal fractal = Fractal::fromScene(scene);
+        Camera camera(scene.camera, 320, 240);
+        MarchSettings sphere;
+        sphere.pixelAngle = camera.pixelFootprint(1);
+        MarchSettings brute = sphere;
+        brute.method = MarchMethod::FixedStep;
+        brute.step = 0.0005;
+        brute.maxSteps = 100000;
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> x(0, 320), y(0, 240);
+        int compared = 0;
+        for (int k = 0; k < 400; ++k) {
+            Ray ray = camera.generateRay(x(rng), y(rng));
+            MarchResult exact = march(fractal, ray, brute);
+            if (!exact.hit) continue;
+            MarchResult traced = march(fractal, ray, sphere);
+            ASSERT_TRUE(traced.hit) << id << " ray " << k;
+            EXPECT_LE(traced.hit->t, exact.hit->t + 1e-9) << id << " ray " << k;
+            ++compared;
+        }
+        EXPECT_GT(compared, 50) << id;
+    }
+}
+
+}  // namespace
+}  // namespace quaternia

@@ -26,7 +26,7 @@ struct PowerForm {
 };
 
 class Polynomial {
-public:
+  public:
     Polynomial() = default;
     // Drops terms with a zero coefficient and sums the constant terms into one.
     explicit Polynomial(std::vector<Term> terms);
@@ -62,7 +62,7 @@ public:
     // digits), e.g. "z^2 + (0.1+0.2j)*z + (-0.2+0.6i+0.2j+0.2k)".
     std::string toString() const;
 
-private:
+  private:
     std::vector<Term> terms_;
 };
 

@@ -26,7 +26,9 @@ struct QuaternionT {
     constexpr T operator[](int index) const {
         return index == 0 ? w : index == 1 ? x : index == 2 ? y : z;
     }
-    constexpr T& operator[](int index) { return index == 0 ? w : index == 1 ? x : index == 2 ? y : z; }
+    constexpr T& operator[](int index) {
+        return index == 0 ? w : index == 1 ? x : index == 2 ? y : z;
+    }
 
     constexpr QuaternionT& operator+=(const QuaternionT& q) {
         w += q.w, x += q.x, y += q.y, z += q.z;

@@ -1,0 +1,131 @@
+#include "render.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "camera.h"
+#include "fractal.h"
+#include "march.h"
+#include "parameters.h"
+#include "shade.h"
+#include "util/parallel.h"
+
+namespace quaternia {
+namespace {
+
+// A small integer hash (Wang/Jenkins style) for reproducible jitter.
+uint32_t hashPixel(uint32_t a) {
+    a = (a ^ 61u) ^ (a >> 16);
+    a *= 9u;
+    a ^= a >> 4;
+    a *= 0x27d4eb2du;
+    a ^= a >> 15;
+    return a;
+}
+
+double unitFromHash(uint32_t h) {
+    return (h >> 8) * (1.0 / 16777216.0);
+}
+
+// Each thread's counters on their own cache lines, so that counting does not contend.
+struct alignas(64) ThreadTotals {
+    RenderStats stats;
+};
+
+}  // namespace
+
+std::array<double, 2> samplePosition(int k, int n, int px, int py) {
+    if (n == 1) return {0.5, 0.5};
+    int columns = int(std::ceil(std::sqrt(double(n))));
+    int rows = (n + columns - 1) / columns;
+    uint32_t h =
+        hashPixel(uint32_t(px) * 73856093u ^ uint32_t(py) * 19349663u ^ uint32_t(k) * 83492791u);
+    double jx = unitFromHash(h), jy = unitFromHash(hashPixel(h));
+    return {(k % columns + jx) / columns, (k / columns + jy) / rows};
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+    validateScene(scene);
+    const Fractal fractal = Fractal::fromScene(scene);
+    const RenderSettings& settings = scene.render;
+    const Camera camera(scene.camera, settings.width, settings.height);
+    const Shader shader(scene.shading, fractal);
+    const MarchSettings marchSettings{settings.method, settings.step, settings.epsilon,
+                                      camera.pixelFootprint(1.0), settings.maxSteps};
+    const double cameraDistance = length(scene.camera.position);
+    const double depthNear = std::max(0.0, cameraDistance - fractal.boundingRadius());
+    const double depthRange = cameraDistance + fractal.boundingRadius() - depthNear;
+
+    RenderResult result;
+    result.image = Image(settings.width, settings.height);
+    if (options.depth) result.depth = GrayImage(settings.width, settings.height);
+
+    ParallelOptions parallel;
+    parallel.threads = resolveThreadCount(options.threads);
+    parallel.tileSize = 16;
+    parallel.cancel = options.cancel;
+    if (options.progress) {
+        parallel.progress = [&](int64_t done, int64_t total) {
+            options.progress(double(done) / double(total));
+        };
+    }
+    std::vector<ThreadTotals> totals(parallel.threads);
+    const int samples = settings.samples;
+
+    auto renderPixel = [&](int px, int py, RenderStats& stats) {
+        Color sum;
+        double depthSum = 0;
+        int hits = 0;
+        ShadingStats shading;
+        for (int k = 0; k < samples; ++k) {
+            auto [sx, sy] = samplePosition(k, samples, px, py);
+            Ray ray = camera.generateRay(px + sx, py + sy);
+            MarchResult marched = march(fractal, ray, marchSettings);
+            stats.marchSteps += marched.steps;
+            stats.iterations += marched.iterations;
+            if (!marched.hit) continue;
+            ++hits;
+            sum += shader.shade(*marched.hit, ray, camera.pixelFootprint(marched.hit->t), shading);
+            depthSum += marched.hit->t;
+        }
+        stats.rays += samples;
+        stats.hits += hits;
+        stats.shadingEstimates += shading.estimates;
+        Color color = hits > 0 ? sum / double(hits)
+                               : shader.background(camera.generateRay(px + 0.5, py + 0.5));
+        Color display = shader.toDisplay(color);
+        result.image.at(px, py) = Rgba{float(display.x), float(display.y), float(display.z),
+                                       float(hits) / float(samples)};
+        if (options.depth) {
+            result.depth.at(px, py) =
+                hits > 0 ? float(std::clamp((depthSum / hits - depthNear) / depthRange, 0.0, 1.0))
+                         : 1.0f;
+        }
+    };
+
+    auto start = std::chrono::steady_clock::now();
+    result.completed = parallelForTiles(settings.width, settings.height, parallel,
+                                        [&](const Tile& tile, int threadIndex) {
+                                            RenderStats& stats = totals[threadIndex].stats;
+                                            for (int py = tile.y0; py < tile.y1; ++py) {
+                                                for (int px = tile.x0; px < tile.x1; ++px)
+                                                    renderPixel(px, py, stats);
+                                            }
+                                        });
+    result.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.stats.threads = parallel.threads;
+    for (const ThreadTotals& t : totals) {
+        result.stats.rays += t.stats.rays;
+        result.stats.hits += t.stats.hits;
+        result.stats.marchSteps += t.stats.marchSteps;
+        result.stats.iterations += t.stats.iterations;
+        result.stats.shadingEstimates += t.stats.shadingEstimates;
+    }
+    return result;
+}
+
+}  // namespace quaternia

@@ -27,13 +27,13 @@ struct FractalSettings {
 struct SliceSettings {
     Quaternion normal;  // (x, y, z, w) components of the 4D hyperplane normal
     double distance = 0;
-    Quaternion left, right;             // unit quaternions
+    Quaternion left, right;                 // unit quaternions
     std::array<double, 6> anglesDegrees{};  // planes 1i, 1j, 1k, ij, ik, jk
 };
 
 struct CameraSettings {
     Point3d position, lookAt;
-    Vector3d up;  // POV-Ray's sky vector
+    Vector3d up;            // POV-Ray's sky vector
     double fovDegrees = 0;  // horizontal field of view
 };
 

@@ -1,0 +1,35 @@
+// A pinhole camera with POV-Ray's conventions (left-handed, horizontal field of view, one ray
+// through each pixel centre), so that the scenes of the reference set give the same picture.
+// The formulas are those of tests/data/reference and docs/conventions.md:
+//   f = normalize(look_at - position), r = normalize(cross(up, f)), u = cross(f, r),
+//   R = (W/H) r, D = f |R| / (2 tan(fov/2)), U = u,
+//   pixel (px, py) -> direction normalize(D + x0 R + y0 U), x0 = (px + 0.5)/W - 0.5,
+//   y0 = 0.5 - (py + 0.5)/H, row 0 at the top.
+#pragma once
+
+#include "scene.h"
+#include "vecmath.h"
+
+namespace quaternia {
+
+class Camera {
+  public:
+    Camera(const CameraSettings& settings, int width, int height);
+
+    // The ray through the image point (x, y) in pixel units: (px + 0.5, py + 0.5) is the centre
+    // of pixel (px, py); other values are used for sub-pixel samples.
+    Ray generateRay(double x, double y) const;
+
+    // Width of one pixel at distance t along a ray near the image centre: t * 2 tan(fov/2) / W.
+    // Marching epsilons are fractions of it, so precision follows the image resolution.
+    double pixelFootprint(double t) const { return t * pixelAngle_; }
+    const Point3d& position() const { return position_; }
+
+  private:
+    Point3d position_;
+    Vector3d right_, up_, direction_;  // R, U, D above
+    int width_, height_;
+    double pixelAngle_;
+};
+
+}  // namespace quaternia

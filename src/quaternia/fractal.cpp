@@ -1,0 +1,44 @@
+#include "fractal.h"
+
+#include "formula.h"
+
+namespace quaternia {
+
+Fractal Fractal::fromScene(const Scene& scene) {
+    Polynomial polynomial = compileFormula(scene.fractal.formula, scene.fractal.c);
+    return Fractal(
+        JuliaSet(std::move(polynomial), scene.fractal.maxIterations, scene.fractal.bailout),
+        Slice(scene.slice));
+}
+
+DistanceEstimate Fractal::estimate(const Point3d& p) const {
+    DistanceEstimate e = set_.estimate(slice_.quaternionFromWorld(p));
+    e.distance *= slice_.stepScale();
+    return e;
+}
+
+Vector3d Fractal::normal(const Point3d& p) const {
+    auto g = set_.potentialGradient(slice_.quaternionFromWorld(p), slice_.tangents());
+    Vector3d n(g[0], g[1], g[2]);
+    double len = length(n);
+    // A zero gradient (the orbit sits on a critical point) has no direction: face the origin's
+    // opposite, which is outward for star-shaped sets.
+    if (!(len > 0) || !std::isfinite(len)) {
+        double lp = length(p);
+        return lp > 0 ? p / lp : Vector3d(0, 1, 0);
+    }
+    return n / len;
+}
+
+Vector3d Fractal::normalByDifferences(const Point3d& p, double h) const {
+    Vector3d g;
+    for (int axis = 0; axis < 3; ++axis) {
+        Point3d plus = p, minus = p;
+        plus[axis] += h;
+        minus[axis] -= h;
+        g[axis] = estimate(plus).distance - estimate(minus).distance;
+    }
+    return normalize(g);
+}
+
+}  // namespace quaternia

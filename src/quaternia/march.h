@@ -1,0 +1,54 @@
+// Finding where a ray first meets the object, two ways:
+// - fixedStepMarch: the seed paper's Algorithm 2, the reference. Samples at a fixed step delta
+//   inside the bounding sphere, each tested for membership by iteration; the first inside
+//   sample is refined by bisection against the last outside one.
+// - sphereTrace: the fast path. Steps by the distance estimate, which cannot cross the set, from
+//   the bounding sphere (the estimate overshoots far away, distance.h) until it falls below
+//   epsilon times the pixel footprint at t: the drawn surface is that offset of K_N, and no
+//   feature wider than a pixel is skipped.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "fractal.h"
+#include "scene.h"
+#include "vecmath.h"
+
+namespace quaternia {
+
+struct RayInterval {
+    double tNear, tFar;
+};
+// Where the ray is inside the ball of the given radius about the origin, for t >= 0.
+std::optional<RayInterval> intersectSphere(const Ray& ray, double radius);
+
+struct MarchSettings {
+    MarchMethod method = MarchMethod::SphereTracing;
+    double step = 0.002;       // fixed-step delta
+    double epsilon = 0.25;     // in pixel footprints
+    double pixelAngle = 1e-3;  // footprint per unit of t: Camera::pixelFootprint(1)
+    int maxSteps = 5000;
+};
+
+struct Hit {
+    double t = 0;
+    Point3d position;
+    // The last point known to be outside K_N (the hit itself for sphere tracing): where the
+    // potential is defined and normals are taken.
+    Point3d outside;
+    DistanceEstimate estimate;
+};
+
+struct MarchResult {
+    std::optional<Hit> hit;
+    int steps = 0;           // distance estimates or membership tests
+    int64_t iterations = 0;  // polynomial evaluations
+};
+
+MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
+MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
+// The method named in the settings.
+MarchResult march(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
+
+}  // namespace quaternia

@@ -1,0 +1,51 @@
+// Rendering a scene to an image: one camera ray per sample, marched (march.h), shaded
+// (shade.h), averaged per pixel, tiles spread over all cores by the one parallel-for.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+#include "image.h"
+#include "scene.h"
+
+namespace quaternia {
+
+struct RenderOptions {
+    int threads = 0;                                // 0 = every core
+    const std::atomic<bool>* cancel = nullptr;      // set to stop early; the result says so
+    std::function<void(double fraction)> progress;  // serialised calls, fraction of tiles done
+    bool depth = false;                             // also fill RenderResult::depth
+};
+
+struct RenderStats {
+    int64_t rays = 0;  // camera rays (pixels x samples)
+    int64_t hits = 0;
+    int64_t marchSteps = 0;        // distance estimates or membership tests of camera rays
+    int64_t iterations = 0;        // polynomial evaluations of camera rays
+    int64_t shadingEstimates = 0;  // shadow and occlusion estimates
+    int threads = 0;
+    double seconds = 0;
+};
+
+struct RenderResult {
+    // Display values (exposure and gamma applied). Alpha is coverage, the fraction of a pixel's
+    // samples that hit; colour is the mean of the hit samples (straight alpha), or the
+    // background where nothing was hit.
+    Image image;
+    // Depth pass when asked for: the mean hit distance scaled so that 0 is the near side of the
+    // bounding sphere and 1 its far side; 1 where nothing was hit.
+    GrayImage depth;
+    RenderStats stats;
+    bool completed = true;  // false if cancelled
+};
+
+// Validates the scene (throws UserError naming the bad key) before any work starts.
+RenderResult render(const Scene& scene, const RenderOptions& options = {});
+
+// Sample k of n within a pixel, in [0, 1)^2: a stratified grid jittered by a hash of the pixel,
+// so images are reproducible; the single sample is the pixel centre.
+std::array<double, 2> samplePosition(int k, int n, int px, int py);
+
+}  // namespace quaternia
