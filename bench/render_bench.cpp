@@ -1,2 +1,60 @@
+// Benchmarks with stable names: the distance-estimate kernel and whole frames of fixed scenes.
+// Counters explain the speed: rays/s, estimates and iterations per ray.
 #include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "quaternia/fractal.h"
+#include "quaternia/parameters.h"
+#include "quaternia/render.h"
+
+namespace quaternia {
+namespace {
+
+// The default scene's fractal, queried at points spread through its bounding ball.
+void BM_DistanceEstimate(benchmark::State& state) {
+    Scene scene = defaultScene();
+    Fractal fractal = Fractal::fromScene(scene);
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> coordinate(-fractal.boundingRadius(),
+                                                      fractal.boundingRadius());
+    std::vector<Point3d> points(4096);
+    for (Point3d& p : points) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+    int64_t iterations = 0;
+    size_t k = 0;
+    for (auto _ : state) {
+        DistanceEstimate e = fractal.estimate(points[k++ & 4095]);
+        iterations += e.iterations;
+        benchmark::DoNotOptimize(e);
+    }
+    state.counters["estimates/s"] =
+        benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["iterations/s"] = benchmark::Counter(double(iterations), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DistanceEstimate);
+
+// A whole frame: arguments are width, height and samples.
+void BM_RenderDefaultScene(benchmark::State& state) {
+    Scene scene = defaultScene();
+    scene.render.width = int(state.range(0));
+    scene.render.height = int(state.range(1));
+    scene.render.samples = int(state.range(2));
+    RenderStats last;
+    for (auto _ : state) last = render(scene).stats;
+    state.counters["rays/s"] = benchmark::Counter(double(last.rays) * state.iterations(),
+                                                  benchmark::Counter::kIsRate);
+    state.counters["steps/ray"] = double(last.marchSteps) / double(last.rays);
+    state.counters["iterations/ray"] = double(last.iterations) / double(last.rays);
+    state.counters["shading_estimates/hit"] =
+        last.hits ? double(last.shadingEstimates) / double(last.hits) : 0.0;
+}
+BENCHMARK(BM_RenderDefaultScene)
+    ->Args({320, 180, 1})
+    ->Args({640, 360, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+}  // namespace quaternia
+
 BENCHMARK_MAIN();
