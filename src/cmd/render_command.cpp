@@ -11,6 +11,7 @@
 #include "quaternia/render.h"
 #include "quaternia/scene_file.h"
 #include "quaternia/util/atomic_file.h"
+#include "quaternia/util/error.h"
 
 namespace quaternia {
 namespace {

@@ -46,7 +46,9 @@ Quaternion JuliaSet::step(const Quaternion& z) const {
 
 double JuliaSet::derivativeGain(double r) const {
     if (power_) {
-        return std::abs(power_->scale) * power_->degree * std::pow(r, power_->degree - 1);
+        // s d r^(d-1), without pow() in the common quadratic case.
+        double gain = std::abs(power_->scale) * power_->degree;
+        return power_->degree == 2 ? gain * r : gain * std::pow(r, power_->degree - 1);
     }
     return polynomial_.derivativeNormBound(r);
 }

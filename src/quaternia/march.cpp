@@ -1,5 +1,6 @@
 #include "march.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace quaternia {
@@ -17,21 +18,39 @@ std::optional<RayInterval> intersectSphere(const Ray& ray, double radius) {
 }
 
 MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
+    // Once the estimate is below epsilon the ray is within about two epsilons of K_N (the
+    // estimate is at least half the true distance near the set). Rather than stop on that offset
+    // surface, which fattens dust and thin filaments, confirm: keep stepping by the estimate but
+    // at least kConfirmStep footprints, testing membership, until a point is inside (the hit),
+    // the estimate grows past epsilon again (a near miss: march on), or kConfirmBudget steps
+    // pass (a grazing ray: take the offset surface after all).
+    constexpr double kConfirmStep = 0.05;
+    constexpr int kConfirmBudget = 48;
     MarchResult result;
     auto interval = intersectSphere(ray, fractal.boundingRadius());
     if (!interval) return result;
     double t = interval->tNear;
+    double tOutside = t;
+    int confirming = 0;
     while (t <= interval->tFar && result.steps < settings.maxSteps) {
         Point3d p = ray.at(t);
         DistanceEstimate e = fractal.estimate(p);
         ++result.steps;
         result.iterations += e.iterations;
-        double epsilon = settings.epsilon * settings.pixelAngle * t;
-        if (e.inside || e.distance < epsilon) {
+        if (e.inside) {
+            Point3d outside = ray.at(tOutside);
+            result.hit = Hit{t, p, outside, fractal.estimate(outside)};
+            return result;
+        }
+        double footprint = settings.pixelAngle * t;
+        if (e.distance >= settings.epsilon * footprint) {
+            confirming = 0;
+        } else if (++confirming > kConfirmBudget) {
             result.hit = Hit{t, p, p, e};
             return result;
         }
-        t += e.distance;
+        tOutside = t;
+        t += confirming ? std::max(e.distance, kConfirmStep * footprint) : e.distance;
     }
     return result;
 }

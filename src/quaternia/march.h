@@ -4,8 +4,9 @@
 //   sample is refined by bisection against the last outside one.
 // - sphereTrace: the fast path. Steps by the distance estimate, which cannot cross the set, from
 //   the bounding sphere (the estimate overshoots far away, distance.h) until it falls below
-//   epsilon times the pixel footprint at t: the drawn surface is that offset of K_N, and no
-//   feature wider than a pixel is skipped.
+//   epsilon times the pixel footprint at t, then confirms membership with steps of a twentieth
+//   of a footprint: the drawn surface is K_N's own (its epsilon-offset only for grazing rays),
+//   and no feature wider than a pixel is skipped.
 #pragma once
 
 #include <cstdint>
