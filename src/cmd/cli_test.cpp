@@ -14,7 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CommandResult {
     int exitCode;
     std::string out, err;
 };
@@ -37,7 +37,7 @@ class Cli : public ::testing::Test {
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    Run run(const std::string& arguments) {
+    CommandResult run(const std::string& arguments) {
         std::string command = std::string(QUATERNIA_BINARY) + " " + arguments + " >" +
                               (dir_ / "stdout").string() + " 2>" + (dir_ / "stderr").string() +
                               " </dev/null";
@@ -59,7 +59,7 @@ class Cli : public ::testing::Test {
         }
     }
     // One line on stderr, exit code 2, mentioning `needle`.
-    void expectUserError(const Run& r, const std::string& needle) {
+    void expectUserError(const CommandResult& r, const std::string& needle) {
         EXPECT_EQ(r.exitCode, 2) << r.err;
         EXPECT_NE(r.err.find(needle), std::string::npos) << "stderr: " << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -72,7 +72,7 @@ class Cli : public ::testing::Test {
 const std::string kTiny = " --width 24 --height 18 --set render.samples=1 --threads 2";
 
 TEST_F(Cli, RendersDefaultSceneWithSummary) {
-    Run r = run("render -o " + output() + kTiny);
+    CommandResult r = run("render -o " + output() + kTiny);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(fs::exists(output()));
     EXPECT_NE(r.out.find("24x18"), std::string::npos) << r.out;
@@ -84,7 +84,7 @@ TEST_F(Cli, RendersDefaultSceneWithSummary) {
 }
 
 TEST_F(Cli, PrintsJsonSummary) {
-    Run r = run("render --json -o " + output() + kTiny + " --depth " + (dir_ / "d.png").string());
+    CommandResult r = run("render --json -o " + output() + kTiny + " --depth " + (dir_ / "d.png").string());
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out.front(), '{');
     for (const char* key : {"\"width\": 24", "\"height\": 18", "\"rays\": 432",
@@ -97,7 +97,7 @@ TEST_F(Cli, PrintsJsonSummary) {
 TEST_F(Cli, SceneFileAndOverridesApply) {
     fs::path scene =
         write("scene.toml", "[fractal]\nformula = \"z^3 + c\"\nc = [-0.5, 0.5, 0, 0]\n");
-    Run r = run("render " + scene.string() + " --json -o " + output() + kTiny +
+    CommandResult r = run("render " + scene.string() + " --json -o " + output() + kTiny +
                 " --set fractal.max_iterations=9");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("\"formula\": \"z^3 + c\""), std::string::npos) << r.out;
@@ -105,7 +105,7 @@ TEST_F(Cli, SceneFileAndOverridesApply) {
 
 TEST_F(Cli, HelpListsEveryKeyWithDefault) {
     for (const char* args : {"--help", "render --help"}) {
-        Run r = run(args);
+        CommandResult r = run(args);
         EXPECT_EQ(r.exitCode, 0);
         for (const char* key : {"fractal.formula", "fractal.c", "slice.left", "camera.fov",
                                 "render.epsilon", "render.method", "shading.ambient_occlusion"}) {
@@ -123,7 +123,7 @@ TEST_F(Cli, MalformedTomlIsOneLineError) {
 
 TEST_F(Cli, UnknownKeyIsNamedWithSuggestion) {
     fs::path scene = write("typo.toml", "[render]\nwidht = 30\n");
-    Run r = run("render " + scene.string() + " -o " + output());
+    CommandResult r = run("render " + scene.string() + " -o " + output());
     expectUserError(r, "render.widht");
     EXPECT_NE(r.err.find("render.width"), std::string::npos);
 }
@@ -148,7 +148,7 @@ TEST_F(Cli, NanAndInfinityAreRefused) {
 }
 
 TEST_F(Cli, UnparsableFormulaNamesColumn) {
-    Run r = run("render -o " + output() + " --set 'fractal.formula=\"z^2 + * c\"'");
+    CommandResult r = run("render -o " + output() + " --set 'fractal.formula=\"z^2 + * c\"'");
     expectUserError(r, "fractal.formula");
     EXPECT_NE(r.err.find("column 7"), std::string::npos) << r.err;
 }
@@ -161,7 +161,7 @@ TEST_F(Cli, PossiblyUnboundedFormulaIsRefused) {
 }
 
 TEST_F(Cli, UnwritableOutputIsRefusedBeforeRendering) {
-    Run r = run("render -o " + (dir_ / "missing" / "out.png").string() + kTiny);
+    CommandResult r = run("render -o " + (dir_ / "missing" / "out.png").string() + kTiny);
     expectUserError(r, "missing/out.png");
 }
 
@@ -171,7 +171,7 @@ TEST_F(Cli, MissingSceneFileIsNamed) {
 }
 
 TEST_F(Cli, BadOptionValueIsOneLineError) {
-    Run r = run("render -o " + output() + " --width abc");
+    CommandResult r = run("render -o " + output() + " --width abc");
     expectUserError(r, "--width");
     expectUserError(run("render -o " + output() + " --set novalue"), "--set");
     expectUserError(run("render -o " + output() + " --threads -3"), "--threads");
