@@ -225,7 +225,7 @@ TEST(Parallel, ExceptionPropagatesAfterWorkersJoin) {
     }
 }
 
-TEST(Parallel, FirstExceptionWinsWhenSeveralThrow) {
+TEST(Parallel, OneExceptionIsRethrownWhenSeveralWorkersThrow) {
     ParallelOptions options;
     options.threads = 4;
     options.tileSize = 1;
