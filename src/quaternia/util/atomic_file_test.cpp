@@ -1,0 +1,192 @@
+#include "atomic_file.h"
+
+#include <gtest/gtest.h>
+#include <stdlib.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "error.h"
+
+namespace quaternia {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh directory per test, removed at the end.
+class AtomicFileTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        std::string pattern = ::testing::TempDir() + "quaternia_atomic_XXXXXX";
+        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+        dir_ = pattern;
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string path(const std::string& name) const { return dir_ + "/" + name; }
+    std::vector<std::string> listing() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir_))
+            names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+    static std::string contents(const std::string& file) {
+        std::ifstream in(file, std::ios::binary);
+        return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    }
+
+    std::string dir_;
+};
+
+TEST_F(AtomicFileTest, CommitProducesExactContent) {
+    const std::string target = path("out.bin");
+    {
+        AtomicFile file(target);
+        EXPECT_EQ(file.path(), target);
+        EXPECT_EQ(file.temporaryPath().rfind(target + ".tmp-", 0), 0u) << file.temporaryPath();
+        const std::string first = "hello, ";
+        file.write(first.data(), first.size());
+        file.write(std::vector<uint8_t>{'w', 0, 'r', 255, 'd'});
+        EXPECT_FALSE(fs::exists(target)) << "nothing at the target before commit";
+        file.commit();
+        EXPECT_TRUE(file.temporaryPath().empty());
+    }
+    EXPECT_EQ(contents(target), std::string("hello, w\0r\xff"
+                                            "d",
+                                            12));
+    EXPECT_EQ(listing(), std::vector<std::string>{"out.bin"});
+}
+
+TEST_F(AtomicFileTest, DestroyingWithoutCommitLeavesNothing) {
+    {
+        AtomicFile file(path("out.bin"));
+        file.write("partial", 7);
+        EXPECT_EQ(listing().size(), 1u) << "the temporary exists while writing";
+    }
+    EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(AtomicFileTest, ExceptionDuringWorkLeavesNothing) {
+    try {
+        AtomicFile file(path("out.bin"));
+        file.write("partial", 7);
+        throw std::runtime_error("render failed");
+    } catch (const std::runtime_error&) {
+    }
+    EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(AtomicFileTest, MissingDirectoryThrowsUserErrorNamingThePath) {
+    const std::string target = path("missing/out.png");
+    try {
+        AtomicFile file(target);
+        FAIL() << "opened a file in a missing directory";
+    } catch (const UserError& e) {
+        EXPECT_EQ(e.key(), target);
+        EXPECT_EQ(std::string(e.what()),
+                  "cannot write '" + target + "': No such file or directory");
+    }
+    EXPECT_THROW(writeFileAtomically(target, {1, 2, 3}), UserError);
+    EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(AtomicFileTest, UnwritableDirectoryThrowsUserError) {
+    if (::geteuid() == 0) GTEST_SKIP() << "root may write anywhere";
+    const std::string locked = path("locked");
+    ASSERT_EQ(::mkdir(locked.c_str(), 0500), 0);
+    const std::string target = locked + "/out.png";
+    try {
+        AtomicFile file(target);
+        FAIL() << "opened a file in a read-only directory";
+    } catch (const UserError& e) {
+        EXPECT_EQ(e.key(), target);
+        EXPECT_EQ(std::string(e.what()), "cannot write '" + target + "': Permission denied");
+    }
+    ::chmod(locked.c_str(), 0700);
+}
+
+TEST_F(AtomicFileTest, DirectoryAsTargetFailsAtOnce) {
+    const std::string target = path("subdir");
+    fs::create_directory(target);
+    try {
+        AtomicFile file(target);
+        FAIL() << "opened a directory as a file";
+    } catch (const UserError& e) {
+        EXPECT_EQ(e.key(), target);
+        EXPECT_EQ(std::string(e.what()), "cannot write '" + target + "': Is a directory");
+    }
+    EXPECT_THROW(AtomicFile(""), UserError);
+}
+
+TEST_F(AtomicFileTest, OverwriteKeepsOldContentUntilCommit) {
+    const std::string target = path("image.png");
+    writeFileAtomically(target, {'o', 'l', 'd'});
+    ::chmod(target.c_str(), 0640);
+    {
+        AtomicFile file(target);
+        file.write("new content", 11);
+        EXPECT_EQ(contents(target), "old") << "old content while writing";
+        file.commit();
+    }
+    EXPECT_EQ(contents(target), "new content");
+    EXPECT_EQ(listing(), std::vector<std::string>{"image.png"});
+    struct stat info;
+    ASSERT_EQ(::stat(target.c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & 0777, 0640u) << "the replaced file's mode is kept";
+
+    {
+        AtomicFile abandoned(target);
+        abandoned.write("never", 5);
+    }
+    EXPECT_EQ(contents(target), "new content") << "an abandoned overwrite changes nothing";
+    EXPECT_EQ(listing(), std::vector<std::string>{"image.png"});
+}
+
+TEST_F(AtomicFileTest, NewFileGetsTheUmaskMode) {
+    const mode_t mask = ::umask(027);
+    writeFileAtomically(path("a"), {1});
+    ::umask(mask);
+    struct stat info;
+    ASSERT_EQ(::stat(path("a").c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & 0777, 0640u);
+}
+
+TEST_F(AtomicFileTest, MovesKeepOneOwnerOfTheTemporary) {
+    const std::string target = path("moved.bin");
+    std::optional<AtomicFile> holder;
+    {
+        AtomicFile file(target);
+        file.write("abc", 3);
+        holder.emplace(std::move(file));
+        EXPECT_TRUE(file.temporaryPath().empty());
+        EXPECT_THROW(file.write("x", 1), std::logic_error);
+    }
+    EXPECT_EQ(listing().size(), 1u) << "the moved-from destructor removed nothing";
+    AtomicFile other(path("other.bin"));
+    other = std::move(*holder);  // discards other's temporary
+    EXPECT_EQ(listing().size(), 1u);
+    other.write("def", 3);
+    other.commit();
+    EXPECT_THROW(other.commit(), std::logic_error);
+    EXPECT_EQ(contents(target), "abcdef");
+    EXPECT_EQ(listing(), std::vector<std::string>{"moved.bin"});
+}
+
+TEST_F(AtomicFileTest, NonDurableCommitAndEmptyFile) {
+    AtomicFile file(path("empty"));
+    file.commit(false);
+    EXPECT_EQ(contents(path("empty")), "");
+    EXPECT_EQ(listing(), std::vector<std::string>{"empty"});
+}
+
+}  // namespace
+}  // namespace quaternia
