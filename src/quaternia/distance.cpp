@@ -114,6 +114,17 @@ bool JuliaSet::contains(const Quaternion& z0) const {
     return true;
 }
 
+double JuliaSet::logRadiusAfter(const Quaternion& z0, int iterations) const {
+    Quaternion z = z0;
+    for (int n = 0; n < iterations; ++n) z = step(z);
+    return 0.5 * std::log(normSquared(z));
+}
+
+int JuliaSet::gradientIterations(const Quaternion& z0) const {
+    DistanceEstimate e = estimate(z0);
+    return e.inside ? maxIterations_ - 1 : e.iterations;
+}
+
 std::array<double, 3> JuliaSet::potentialGradient(const Quaternion& z0,
                                                   const std::array<Quaternion, 3>& tangents) const {
     const double bailoutSquared = bailout_ * bailout_;

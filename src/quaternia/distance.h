@@ -10,6 +10,10 @@
 //   coefficient-norm products times r^degree, which bounds the operator norm of the Jacobian of
 //   f^n from above, so d can only shrink: a conservative estimate, but no theorem makes it a
 //   lower bound of the distance (tests check it against sampled grids instead).
+// - The estimate is of the distance to K. The drawn set is K_N (N iterations), which contains K
+//   and a thin shell K_N \ K of points escaping after N: a step may end inside that shell, where
+//   the marcher stops (membership is tested at every step), but a shell thinner than the
+//   confirmation step can be crossed. The shell vanishes as N grows.
 // - Far from the set d overshoots (c = 0: 0.5 r ln r > r - 1 beyond r = 4.92): marching starts
 //   on the bounding sphere.
 #pragma once
@@ -47,6 +51,11 @@ class JuliaSet {
     // a normal of the level sets of the potential, from one pass through the Jacobians of p.
     std::array<double, 3> potentialGradient(const Quaternion& z0,
                                             const std::array<Quaternion, 3>& tangents) const;
+
+    // ln|z_M| after exactly M iterations, and the M that potentialGradient() differentiates at
+    // z0: for checking the analytic gradient against finite differences.
+    double logRadiusAfter(const Quaternion& z0, int iterations) const;
+    int gradientIterations(const Quaternion& z0) const;
 
     const Polynomial& polynomial() const { return polynomial_; }
     int maxIterations() const { return maxIterations_; }

@@ -31,12 +31,16 @@ Vector3d Fractal::normal(const Point3d& p) const {
 }
 
 Vector3d Fractal::normalByDifferences(const Point3d& p, double h) const {
+    // The potential's level sets are what the analytic normal differentiates: ln|z_M| with M
+    // fixed at the point itself (the estimate's own gradient differs by that of ln|z'_M|).
+    const int iterations = set_.gradientIterations(slice_.quaternionFromWorld(p));
     Vector3d g;
     for (int axis = 0; axis < 3; ++axis) {
         Point3d plus = p, minus = p;
         plus[axis] += h;
         minus[axis] -= h;
-        g[axis] = estimate(plus).distance - estimate(minus).distance;
+        g[axis] = set_.logRadiusAfter(slice_.quaternionFromWorld(plus), iterations) -
+                  set_.logRadiusAfter(slice_.quaternionFromWorld(minus), iterations);
     }
     return normalize(g);
 }

@@ -22,7 +22,7 @@ class Fractal {
     bool contains(const Point3d& p) const { return set_.contains(slice_.quaternionFromWorld(p)); }
     // Unit outward normal from the analytic Jacobian (one pass, ALGORITHMS.md, Normals).
     Vector3d normal(const Point3d& p) const;
-    // Unit normal from central differences of the distance estimate, step h: the simple
+    // Unit normal from central differences of the potential ln|z_M|, step h: the simple
     // reference that tests hold the analytic normal to.
     Vector3d normalByDifferences(const Point3d& p, double h) const;
 

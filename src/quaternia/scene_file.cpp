@@ -180,7 +180,7 @@ void applyOverride(Scene& scene, std::string_view assignment) {
     std::size_t equals = assignment.find('=');
     if (equals == std::string_view::npos)
         throw UserError("--set",
-                        "expected section.key=value, got '" + std::string(assignment) + "'");
+                        "--set expects section.key=value, got '" + std::string(assignment) + "'");
     std::string name = trim(assignment.substr(0, equals));
     std::string raw = trim(assignment.substr(equals + 1));
 

@@ -232,7 +232,7 @@ TEST(SceneFileOverride, TakesABareWordAsAString) {
 TEST(SceneFileOverride, RejectsAnAssignmentWithoutEquals) {
     UserError error = overrideError("render.width");
     EXPECT_EQ(error.key(), "--set");
-    EXPECT_STREQ(error.what(), "expected section.key=value, got 'render.width'");
+    EXPECT_STREQ(error.what(), "--set expects section.key=value, got 'render.width'");
 }
 
 TEST(SceneFileOverride, ReportsBadKeysAndValues) {
