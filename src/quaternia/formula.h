@@ -37,11 +37,14 @@ struct FormulaNode;  // the parsed expression tree (formula.cpp)
 class Formula {
   public:
     // Throws FormulaError, whose message reads like
-    // "column 7: expected a number, i, j, k, z, c or '(' but found ')'".
+    // "column 7: expected a number, i, j, k, z, c or '(' but found ')'". Exponents are integer
+    // literals up to 64; texts over 10000 characters or nested over 100 deep are refused.
     static Formula parse(std::string_view text);
 
     // Multiplies out every product (keeping the order of factors) and merges adjacent constant
     // factors. Throws FormulaError(0, ...) if the result exceeds degree 64 or 4096 terms.
+    // Like terms (equal coefficients after the first) are added and zero terms dropped, so
+    // "z^2 - z^2 + c" is the constant c and "(z + 1)^3" has 4 terms.
     Polynomial expand(const Quaternion& c) const;
     // True if the name c occurs in the formula.
     bool usesC() const;
