@@ -517,19 +517,20 @@ double Polynomial::escapeRadius() const {
             value = value * r - b[k];
         return value;
     };
-    double lo = 0, hi = 1;  // f <= 0 on (0, R], f > 0 beyond
-    while (!(f(hi) > 0)) {
+    double lo = 0, hi = 1;  // f < 0 on (0, R), f >= 0 from R on: bisect keeping f(hi) >= 0
+    while (f(hi) < 0) {
         lo = hi;
         hi *= 2;
-        if (!std::isfinite(hi))
+        if (!std::isfinite(hi)) {
             throw UserError("fractal.formula",
                             "fractal.formula: " + toString() + ": no finite escape radius");
+        }
     }
     for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
         const double mid = (lo + hi) / 2;
-        (f(mid) > 0 ? hi : lo) = mid;
+        (f(mid) < 0 ? lo : hi) = mid;
     }
-    return hi;  // f(hi) > 0: on the safe side of the root
+    return hi;  // R itself when f(R) is exactly 0, as for z^2 (R = 1)
 }
 
 // Terms joined by " + ", or " - " when the leading coefficient is a negative real.

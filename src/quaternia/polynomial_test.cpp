@@ -115,6 +115,7 @@ TEST(Polynomial, EscapeRadiusOfQuadraticIsClosedForm) {
         EXPECT_NEAR(r, (1 + std::sqrt(1 + 4 * norms[n])) / 2, 1e-13 * r);
         EXPECT_NEAR(r, expected[n], 5e-5);
     }
+    EXPECT_EQ(compileFormula("z^2", Quaternion{}).escapeRadius(), 1);
     // Sharp for real c <= 0: R is a fixed point of z^2 + c, so no smaller radius escapes.
     const Polynomial airplane = compileFormula("z^2 + c", Quaternion{-2});
     EXPECT_NEAR(norm(airplane.evaluate(Quaternion{airplane.escapeRadius()})), 2, 1e-13);
