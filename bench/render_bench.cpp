@@ -19,7 +19,8 @@ void BM_DistanceEstimate(benchmark::State& state) {
     std::uniform_real_distribution<double> coordinate(-fractal.boundingRadius(),
                                                       fractal.boundingRadius());
     std::vector<Point3d> points(4096);
-    for (Point3d& p : points) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+    for (Point3d& p : points)
+        p = {coordinate(rng), coordinate(rng), coordinate(rng)};
     int64_t iterations = 0;
     size_t k = 0;
     for (auto _ : state) {
@@ -29,7 +30,8 @@ void BM_DistanceEstimate(benchmark::State& state) {
     }
     state.counters["estimates/s"] =
         benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
-    state.counters["iterations/s"] = benchmark::Counter(double(iterations), benchmark::Counter::kIsRate);
+    state.counters["iterations/s"] =
+        benchmark::Counter(double(iterations), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_DistanceEstimate);
 
@@ -40,9 +42,10 @@ void BM_RenderDefaultScene(benchmark::State& state) {
     scene.render.height = int(state.range(1));
     scene.render.samples = int(state.range(2));
     RenderStats last;
-    for (auto _ : state) last = render(scene).stats;
-    state.counters["rays/s"] = benchmark::Counter(double(last.rays) * state.iterations(),
-                                                  benchmark::Counter::kIsRate);
+    for (auto _ : state)
+        last = render(scene).stats;
+    state.counters["rays/s"] =
+        benchmark::Counter(double(last.rays) * state.iterations(), benchmark::Counter::kIsRate);
     state.counters["steps/ray"] = double(last.marchSteps) / double(last.rays);
     state.counters["iterations/ray"] = double(last.iterations) / double(last.rays);
     state.counters["shading_estimates/hit"] =

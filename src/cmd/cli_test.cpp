@@ -84,7 +84,8 @@ TEST_F(Cli, RendersDefaultSceneWithSummary) {
 }
 
 TEST_F(Cli, PrintsJsonSummary) {
-    CommandResult r = run("render --json -o " + output() + kTiny + " --depth " + (dir_ / "d.png").string());
+    CommandResult r =
+        run("render --json -o " + output() + kTiny + " --depth " + (dir_ / "d.png").string());
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out.front(), '{');
     for (const char* key : {"\"width\": 24", "\"height\": 18", "\"rays\": 432",
@@ -98,7 +99,7 @@ TEST_F(Cli, SceneFileAndOverridesApply) {
     fs::path scene =
         write("scene.toml", "[fractal]\nformula = \"z^3 + c\"\nc = [-0.5, 0.5, 0, 0]\n");
     CommandResult r = run("render " + scene.string() + " --json -o " + output() + kTiny +
-                " --set fractal.max_iterations=9");
+                          " --set fractal.max_iterations=9");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("\"formula\": \"z^3 + c\""), std::string::npos) << r.out;
 }

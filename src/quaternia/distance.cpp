@@ -116,7 +116,8 @@ bool JuliaSet::contains(const Quaternion& z0) const {
 
 double JuliaSet::logRadiusAfter(const Quaternion& z0, int iterations) const {
     Quaternion z = z0;
-    for (int n = 0; n < iterations; ++n) z = step(z);
+    for (int n = 0; n < iterations; ++n)
+        z = step(z);
     return 0.5 * std::log(normSquared(z));
 }
 

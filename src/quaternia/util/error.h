@@ -10,13 +10,13 @@
 namespace quaternia {
 
 class UserError : public std::runtime_error {
-public:
+  public:
     // `key` names what was bad, e.g. "render.width", "fractal.formula" or an output path.
     UserError(std::string key, const std::string& message)
         : std::runtime_error(message), key_(std::move(key)) {}
     const std::string& key() const { return key_; }
 
-private:
+  private:
     std::string key_;
 };
 
