@@ -20,6 +20,106 @@ Quaternion power(const Quaternion& z, int degree) {
     return result;
 }
 
+// One form of polynomial as the hot loops see it: the map, and the squared gain of the running
+// derivative norm, (|z'_{n+1}| / |z'_n|)^2 at |z_n|^2 = r2. Carrying |z'|^2 saves a square root
+// per iteration; each form is a separate instantiation so that the map is inlined.
+struct QuadraticMap {  // s z^2 + c
+    Quaternion c;
+    double s;
+    Quaternion operator()(const Quaternion& z) const { return square(z) * s + c; }
+    double gainSquared(double r2) const { return 4 * s * s * r2; }
+};
+struct PowerMap {  // s z^d + c
+    Quaternion c;
+    double s;
+    int d;
+    Quaternion operator()(const Quaternion& z) const { return power(z, d) * s + c; }
+    double gainSquared(double r2) const {
+        double g = s * s * d * d;
+        for (int k = 1; k < d; ++k)
+            g *= r2;
+        return g;
+    }
+};
+struct GeneralMap {  // any eq. 2.10 polynomial, with the bound P'(|z|) on the derivative
+    const Polynomial* p;
+    Quaternion operator()(const Quaternion& z) const { return p->evaluate(z); }
+    double gainSquared(double r2) const {
+        double g = p->derivativeNormBound(std::sqrt(r2));
+        return g * g;
+    }
+};
+
+struct IterationLimits {
+    int maxIterations;
+    double bailoutSquared;
+    double escapeRadiusSquared;
+    int degree;
+};
+
+template <typename Map>
+DistanceEstimate estimateWith(const Map& map, const IterationLimits& limits, const Quaternion& z0) {
+    DistanceEstimate result;
+    Quaternion z = z0;
+    double derivativeSquared = 1;
+    double r2 = normSquared(z);
+    double trap2 = r2;
+    int n = 0;  // z = z_n; the iterates z_0 .. z_{N-1} are tested
+    while (r2 <= limits.bailoutSquared) {
+        if (n + 1 >= limits.maxIterations) {
+            result.inside = true;
+            result.trap = std::sqrt(trap2);
+            result.escapeIteration = result.iterations = limits.maxIterations;
+            result.smoothIteration = limits.maxIterations;
+            return result;
+        }
+        derivativeSquared *= map.gainSquared(r2);
+        z = map(z);
+        r2 = normSquared(z);
+        trap2 = std::min(trap2, r2);
+        ++n;
+    }
+    result.trap = std::sqrt(trap2);
+    result.escapeIteration = n;
+    // Escape beyond the certified radius is final, so iterating on cannot change membership;
+    // it takes the estimate where it is accurate.
+    int extra = 0;
+    if (r2 > limits.escapeRadiusSquared) {
+        for (; r2 < kEstimateRadiusSquared && extra < kMaxContinuation; ++extra) {
+            derivativeSquared *= map.gainSquared(r2);
+            z = map(z);
+            r2 = normSquared(z);
+        }
+    }
+    result.iterations = n + extra;
+    // d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2) ln |z|^2.
+    result.distance = std::max(0.0, 0.25 * std::sqrt(r2 / derivativeSquared) * std::log(r2));
+    // Continuous escape count (renormalised iteration count) for colouring.
+    double d = std::max(2, limits.degree);
+    result.smoothIteration =
+        n + extra + 1 - std::log(std::max(1e-12, 0.5 * std::log(r2))) / std::log(d);
+    return result;
+}
+
+template <typename Map>
+bool containsWith(const Map& map, const IterationLimits& limits, const Quaternion& z0) {
+    Quaternion z = z0;
+    if (normSquared(z) > limits.bailoutSquared) return false;
+    for (int n = 1; n < limits.maxIterations; ++n) {
+        z = map(z);
+        if (normSquared(z) > limits.bailoutSquared) return false;
+    }
+    return true;
+}
+
+// Calls f with the map of the polynomial's form.
+template <typename F>
+auto withMap(const std::optional<PowerForm>& power, const Polynomial& polynomial, F f) {
+    if (power && power->degree == 2) return f(QuadraticMap{power->constant, power->scale});
+    if (power) return f(PowerMap{power->constant, power->scale, power->degree});
+    return f(GeneralMap{&polynomial});
+}
+
 }  // namespace
 
 JuliaSet::JuliaSet(Polynomial polynomial, int maxIterations, double bailout)
@@ -36,89 +136,32 @@ JuliaSet::JuliaSet(Polynomial polynomial, int maxIterations, double bailout)
     bailout_ = bailout == 0 ? escapeRadius_ : bailout;
 }
 
-Quaternion JuliaSet::step(const Quaternion& z) const {
-    if (power_) {
-        Quaternion zd = power_->degree == 2 ? square(z) : power(z, power_->degree);
-        return zd * power_->scale + power_->constant;
-    }
-    return polynomial_.evaluate(z);
-}
-
-double JuliaSet::derivativeGain(double r) const {
-    if (power_) {
-        // s d r^(d-1), without pow() in the common quadratic case.
-        double gain = std::abs(power_->scale) * power_->degree;
-        return power_->degree == 2 ? gain * r : gain * std::pow(r, power_->degree - 1);
-    }
-    return polynomial_.derivativeNormBound(r);
-}
-
 Quaternion JuliaSet::derivative(const Quaternion& z, const Quaternion& h) const {
     if (power_ && power_->degree == 2) return (z * h + h * z) * power_->scale;
     return polynomial_.derivative(z, h);
 }
 
-bool JuliaSet::continues(double normSquared, int extra, bool certain) const {
-    return certain && normSquared < kEstimateRadiusSquared && extra < kMaxContinuation;
-}
-
 DistanceEstimate JuliaSet::estimate(const Quaternion& z0) const {
-    DistanceEstimate result;
-    const double bailoutSquared = bailout_ * bailout_;
-    Quaternion z = z0;
-    double derivativeNorm = 1;
-    double r2 = normSquared(z);
-    double trap2 = r2;
-    int n = 0;  // z = z_n; the iterates z_0 .. z_{N-1} are tested
-    while (r2 <= bailoutSquared) {
-        if (n + 1 >= maxIterations_) {
-            result.inside = true;
-            result.trap = std::sqrt(trap2);
-            result.escapeIteration = result.iterations = maxIterations_;
-            result.smoothIteration = maxIterations_;
-            return result;
-        }
-        derivativeNorm *= derivativeGain(std::sqrt(r2));
-        z = step(z);
-        r2 = normSquared(z);
-        trap2 = std::min(trap2, r2);
-        ++n;
-    }
-    result.trap = std::sqrt(trap2);
-    result.escapeIteration = n;
-    // Escape beyond the certified radius is final, so iterating on cannot change membership.
-    bool certain = r2 > escapeRadius_ * escapeRadius_;
-    int extra = 0;
-    for (; continues(r2, extra, certain); ++extra) {
-        derivativeNorm *= derivativeGain(std::sqrt(r2));
-        z = step(z);
-        r2 = normSquared(z);
-    }
-    double r = std::sqrt(r2);
-    result.iterations = n + extra;
-    result.distance = std::max(0.0, 0.5 * r * std::log(r) / derivativeNorm);
-    // Continuous escape count (renormalised iteration count) for colouring.
-    double d = std::max(2, degree_);
-    result.smoothIteration = n + extra + 1 - std::log(std::max(1e-12, std::log(r))) / std::log(d);
-    return result;
+    IterationLimits limits{maxIterations_, bailout_ * bailout_, escapeRadius_ * escapeRadius_,
+                           degree_};
+    return withMap(power_, polynomial_,
+                   [&](const auto& map) { return estimateWith(map, limits, z0); });
 }
 
 bool JuliaSet::contains(const Quaternion& z0) const {
-    const double bailoutSquared = bailout_ * bailout_;
-    Quaternion z = z0;
-    if (normSquared(z) > bailoutSquared) return false;
-    for (int n = 1; n < maxIterations_; ++n) {
-        z = step(z);
-        if (normSquared(z) > bailoutSquared) return false;
-    }
-    return true;
+    IterationLimits limits{maxIterations_, bailout_ * bailout_, escapeRadius_ * escapeRadius_,
+                           degree_};
+    return withMap(power_, polynomial_,
+                   [&](const auto& map) { return containsWith(map, limits, z0); });
 }
 
 double JuliaSet::logRadiusAfter(const Quaternion& z0, int iterations) const {
-    Quaternion z = z0;
-    for (int n = 0; n < iterations; ++n)
-        z = step(z);
-    return 0.5 * std::log(normSquared(z));
+    return withMap(power_, polynomial_, [&](const auto& map) {
+        Quaternion z = z0;
+        for (int n = 0; n < iterations; ++n)
+            z = map(z);
+        return 0.5 * std::log(normSquared(z));
+    });
 }
 
 int JuliaSet::gradientIterations(const Quaternion& z0) const {
@@ -128,30 +171,25 @@ int JuliaSet::gradientIterations(const Quaternion& z0) const {
 
 std::array<double, 3> JuliaSet::potentialGradient(const Quaternion& z0,
                                                   const std::array<Quaternion, 3>& tangents) const {
-    const double bailoutSquared = bailout_ * bailout_;
+    // The same iterations as estimate(), carrying the three tangents through the Jacobian of p
+    // at each iterate: the chain rule for d z_M / d x_a.
+    const int iterations = gradientIterations(z0);
     Quaternion z = z0;
     std::array<Quaternion, 3> t = tangents;
-    auto advance = [&] {
-        for (auto& tangent : t)
-            tangent = derivative(z, tangent);
-        z = step(z);
-        // Only the direction matters: rescale together before the tangents overflow.
-        double largest = std::max({normSquared(t[0]), normSquared(t[1]), normSquared(t[2])});
-        if (largest > 1e200) {
+    withMap(power_, polynomial_, [&](const auto& map) {
+        for (int n = 0; n < iterations; ++n) {
             for (auto& tangent : t)
-                tangent *= 1e-100;
+                tangent = derivative(z, tangent);
+            z = map(z);
+            // Only the direction matters: rescale together before the tangents overflow.
+            double largest = std::max({normSquared(t[0]), normSquared(t[1]), normSquared(t[2])});
+            if (largest > 1e200) {
+                for (auto& tangent : t)
+                    tangent *= 1e-100;
+            }
         }
-        return normSquared(z);
-    };
-    // The same iterations as estimate(): up to the escape, then the certain continuation.
-    double r2 = normSquared(z);
-    for (int n = 0; r2 <= bailoutSquared && n + 1 < maxIterations_; ++n)
-        r2 = advance();
-    if (r2 > bailoutSquared) {
-        bool certain = r2 > escapeRadius_ * escapeRadius_;
-        for (int extra = 0; continues(r2, extra, certain); ++extra)
-            r2 = advance();
-    }
+        return 0;
+    });
     return {dot(z, t[0]), dot(z, t[1]), dot(z, t[2])};
 }
 

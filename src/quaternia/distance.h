@@ -64,12 +64,7 @@ class JuliaSet {
     double boundingRadius() const { return bailout_; }     // K_N lies in this ball
 
   private:
-    Quaternion step(const Quaternion& z) const;  // p(z)
-    double derivativeGain(double r) const;       // |z'_{n+1}| / |z'_n| at |z_n| = r
     Quaternion derivative(const Quaternion& z, const Quaternion& h) const;  // Dp(z)[h]
-    // After escaping at the bailout, keep iterating while the orbit is certainly escaping, so
-    // that the estimate is taken at a large |z| where it is accurate.
-    bool continues(double normSquared, int extra, bool certain) const;
 
     Polynomial polynomial_;
     std::optional<PowerForm> power_;

@@ -64,7 +64,7 @@ ParameterValue alternativeValue(const Parameter& p) {
 
 TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
     const auto& table = parameterTable();
-    EXPECT_EQ(table.size(), 38u);  // every field of Scene (scene.h)
+    EXPECT_EQ(table.size(), 39u);  // every field of Scene (scene.h)
     std::set<std::string> names;
     for (const auto& p : table) {
         EXPECT_TRUE(names.insert(p.name()).second) << p.name() << " is declared twice";
@@ -121,7 +121,7 @@ TEST(ParameterDefaults, MatchesTheTable) {
     EXPECT_EQ(s.slice.right, Quaternion(1, 0, 0, 0));
     EXPECT_EQ(s.slice.anglesDegrees, (std::array<double, 6>{0, 0, 0, 0, 0, 0}));
 
-    EXPECT_EQ(s.camera.position, Point3d(1, 1.5, -4));
+    EXPECT_EQ(s.camera.position, Point3d(1.25, 1.875, -5));
     EXPECT_EQ(s.camera.lookAt, Point3d(0, 0, 0));
     EXPECT_EQ(s.camera.up, Vector3d(0, 1, 0));
     EXPECT_EQ(s.camera.fovDegrees, 45.0);
@@ -134,23 +134,24 @@ TEST(ParameterDefaults, MatchesTheTable) {
     EXPECT_EQ(s.render.epsilon, 0.25);
     EXPECT_EQ(s.render.maxSteps, 5000);
     EXPECT_EQ(s.render.bitDepth, 8);
+    EXPECT_EQ(s.render.alpha, AlphaMode::Coverage);
 
     const ShadingSettings& h = s.shading;
     EXPECT_EQ(h.lightDirection, Vector3d(-0.5, 0.8, -0.6));
-    EXPECT_EQ(h.lightColor, Color(1.0, 0.96, 0.9));
+    EXPECT_EQ(h.lightColor, Color(1.0, 0.92, 0.8));
     EXPECT_EQ(h.shadows, Shadows::Soft);
     EXPECT_EQ(h.shadowSoftness, 12.0);
     EXPECT_EQ(h.fillDirection, Vector3d(0.6, 0.2, -0.4));
-    EXPECT_EQ(h.fillColor, Color(0.3, 0.35, 0.45));
+    EXPECT_EQ(h.fillColor, Color(0.12, 0.16, 0.25));
     EXPECT_EQ(h.ambient, 0.08);
     EXPECT_EQ(h.ambientOcclusion, 0.8);
-    EXPECT_EQ(h.specular, 0.4);
+    EXPECT_EQ(h.specular, 0.3);
     EXPECT_EQ(h.shininess, 40.0);
     EXPECT_EQ(h.coloring, Coloring::OrbitTrap);
-    EXPECT_EQ(h.baseColor, Color(0.85, 0.45, 0.2));
-    EXPECT_EQ(h.accentColor, Color(0.2, 0.45, 0.8));
-    EXPECT_EQ(h.backgroundTop, Color(0.05, 0.06, 0.1));
-    EXPECT_EQ(h.backgroundBottom, Color(0.01, 0.01, 0.02));
+    EXPECT_EQ(h.baseColor, Color(0.85, 0.42, 0.1));
+    EXPECT_EQ(h.accentColor, Color(0.04, 0.16, 0.45));
+    EXPECT_EQ(h.backgroundTop, Color(0.02, 0.025, 0.04));
+    EXPECT_EQ(h.backgroundBottom, Color(0.002, 0.002, 0.004));
     EXPECT_EQ(h.gamma, 2.2);
     EXPECT_EQ(h.exposure, 1.0);
 

@@ -94,11 +94,18 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         stats.rays += samples;
         stats.hits += hits;
         stats.shadingEstimates += shading.estimates;
-        Color color = hits > 0 ? sum / double(hits)
-                               : shader.background(camera.generateRay(px + 0.5, py + 0.5));
+        Color background = shader.background(camera.generateRay(px + 0.5, py + 0.5));
+        double coverage = double(hits) / samples;
+        Color color;
+        if (settings.alpha == AlphaMode::Opaque) {
+            color = sum / double(samples) + background * (1 - coverage);
+            coverage = 1;
+        } else {
+            color = hits > 0 ? sum / double(hits) : background;
+        }
         Color display = shader.toDisplay(color);
-        result.image.at(px, py) = Rgba{float(display.x), float(display.y), float(display.z),
-                                       float(hits) / float(samples)};
+        result.image.at(px, py) =
+            Rgba{float(display.x), float(display.y), float(display.z), float(coverage)};
         if (options.depth) {
             result.depth.at(px, py) =
                 hits > 0 ? float(std::clamp((depthSum / hits - depthNear) / depthRange, 0.0, 1.0))

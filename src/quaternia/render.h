@@ -30,9 +30,10 @@ struct RenderStats {
 };
 
 struct RenderResult {
-    // Display values (exposure and gamma applied). Alpha is coverage, the fraction of a pixel's
-    // samples that hit; colour is the mean of the hit samples (straight alpha), or the
-    // background where nothing was hit.
+    // Display values (exposure and gamma applied). With render.alpha = "coverage", alpha is the
+    // fraction of a pixel's samples that hit and colour the mean of the hit samples (straight
+    // alpha), or the background where nothing was hit; with "opaque", the samples are
+    // composited over the background and alpha is 1.
     Image image;
     // Depth pass when asked for: the mean hit distance scaled so that 0 is the near side of the
     // bounding sphere and 1 its far side; 1 where nothing was hit.

@@ -38,6 +38,9 @@ struct CameraSettings {
 };
 
 enum class MarchMethod { SphereTracing, FixedStep };
+// Coverage: alpha is the fraction of a pixel's samples that hit, colour that of the hits.
+// Opaque: the image is composited over the background gradient, alpha 1.
+enum class AlphaMode { Coverage, Opaque };
 
 struct RenderSettings {
     int width = 0, height = 0;
@@ -47,6 +50,7 @@ struct RenderSettings {
     double epsilon = 0;  // sphere tracing stops at epsilon * pixel footprint at distance t
     int maxSteps = 0;    // per ray, for either marcher
     int bitDepth = 0;    // 8 or 16 bits per PNG channel
+    AlphaMode alpha = AlphaMode::Coverage;
 };
 
 enum class Shadows { None, Hard, Soft };

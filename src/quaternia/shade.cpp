@@ -74,7 +74,7 @@ Color Shader::albedo(const DistanceEstimate& estimate) const {
         case Coloring::OrbitTrap:
         default: {
             // The orbit's closest approach to 0, relative to the set's size.
-            double v = smoothstep(0.0, 1.0, estimate.trap / fractal_.set().escapeRadius());
+            double v = smoothstep(0.15, 0.75, estimate.trap / fractal_.set().escapeRadius());
             return lerp(settings_.accentColor, settings_.baseColor, v);
         }
     }
