@@ -8,10 +8,13 @@
 namespace quaternia {
 namespace {
 
-// The estimate is evaluated once |z| passes this radius (or the continuation budget runs out):
-// its relative error falls like 1 / ln|z| (Hart et al.), and 1e4 keeps z^d far from overflow.
-constexpr double kEstimateRadiusSquared = 1e8;
+// The estimate is evaluated once |z| passes 1e4 (or the continuation budget runs out): its
+// relative error falls like 1 / ln|z| (Hart et al.). For high degrees the radius shrinks so
+// that one more step, |z|^(2d), stays below 1e300.
 constexpr int kMaxContinuation = 64;
+double estimateRadiusSquared(int degree) {
+    return std::min(1e8, std::pow(1e300, 1.0 / std::max(1, degree)));
+}
 
 Quaternion power(const Quaternion& z, int degree) {
     Quaternion result = z;
@@ -55,6 +58,7 @@ struct IterationLimits {
     double bailoutSquared;
     double escapeRadiusSquared;
     int degree;
+    double estimateRadiusSquared;
 };
 
 template <typename Map>
@@ -85,7 +89,7 @@ DistanceEstimate estimateWith(const Map& map, const IterationLimits& limits, con
     // it takes the estimate where it is accurate.
     int extra = 0;
     if (r2 > limits.escapeRadiusSquared) {
-        for (; r2 < kEstimateRadiusSquared && extra < kMaxContinuation; ++extra) {
+        for (; r2 < limits.estimateRadiusSquared && extra < kMaxContinuation; ++extra) {
             derivativeSquared *= map.gainSquared(r2);
             z = map(z);
             r2 = normSquared(z);
@@ -134,6 +138,7 @@ JuliaSet::JuliaSet(Polynomial polynomial, int maxIterations, double bailout)
                             std::to_string(bailout));
     }
     bailout_ = bailout == 0 ? escapeRadius_ : bailout;
+    estimateRadiusSquared_ = estimateRadiusSquared(degree_);
 }
 
 Quaternion JuliaSet::derivative(const Quaternion& z, const Quaternion& h) const {
@@ -143,14 +148,14 @@ Quaternion JuliaSet::derivative(const Quaternion& z, const Quaternion& h) const 
 
 DistanceEstimate JuliaSet::estimate(const Quaternion& z0) const {
     IterationLimits limits{maxIterations_, bailout_ * bailout_, escapeRadius_ * escapeRadius_,
-                           degree_};
+                           degree_, estimateRadiusSquared_};
     return withMap(power_, polynomial_,
                    [&](const auto& map) { return estimateWith(map, limits, z0); });
 }
 
 bool JuliaSet::contains(const Quaternion& z0) const {
     IterationLimits limits{maxIterations_, bailout_ * bailout_, escapeRadius_ * escapeRadius_,
-                           degree_};
+                           degree_, estimateRadiusSquared_};
     return withMap(power_, polynomial_,
                    [&](const auto& map) { return containsWith(map, limits, z0); });
 }

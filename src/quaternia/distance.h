@@ -72,6 +72,7 @@ class JuliaSet {
     double escapeRadius_;
     double bailout_;
     int degree_;
+    double estimateRadiusSquared_;  // where the continuation stops
 };
 
 }  // namespace quaternia

@@ -44,6 +44,21 @@ TEST(DistanceEstimate, IsZeroInsideTheSet) {
     EXPECT_EQ(e.escapeIteration, 50);
 }
 
+// High degrees and large bailouts must not overflow into infinities or NaN: the continuation
+// radius shrinks with the degree.
+TEST(DistanceEstimate, StaysFiniteForHighDegreeAndLargeBailout) {
+    for (double bailout : {0.0, 1000.0}) {
+        JuliaSet set(compileFormula("z^40 + c", Quaternion(0.3, 0.1, 0, 0)), 50, bailout);
+        std::mt19937 rng(23);
+        std::uniform_real_distribution<double> radius(0.5, bailout == 0 ? 2.0 : 999.0);
+        for (int k = 0; k < 1000; ++k) {
+            DistanceEstimate e = set.estimate(randomUnit(rng) * radius(rng));
+            ASSERT_TRUE(std::isfinite(e.distance)) << "bailout " << bailout;
+            ASSERT_GE(e.distance, 0);
+        }
+    }
+}
+
 // For a two-sided polynomial the estimate has no theorem behind it; hold it to geometry: at
 // points near the set it must not exceed the distance to the nearest member of a fine grid.
 TEST(DistanceEstimate, TwoSidedPolynomialStaysBelowGridDistance) {

@@ -7,23 +7,13 @@
 #include <functional>
 #include <random>
 
+#include "test_helpers.h"
 #include "util/error.h"
 
 namespace quaternia {
 namespace {
 
-constexpr Quaternion kI = kUnitI, kJ = kUnitJ, kK = kUnitK;
-
-Quaternion randomQuaternion(std::mt19937& rng, double scale = 1.5) {
-    std::uniform_real_distribution<double> u(-scale, scale);
-    return {u(rng), u(rng), u(rng), u(rng)};
-}
-
-void expectNear(const Quaternion& actual, const Quaternion& expected, double tolerance) {
-    for (int k = 0; k < 4; ++k) {
-        EXPECT_NEAR(actual[k], expected[k], tolerance) << actual << " vs " << expected;
-    }
-}
+using namespace quaternia::testing;
 
 struct DirectCase {
     const char* text;

@@ -46,6 +46,9 @@ struct Parameter {
 };
 
 // Every parameter, grouped by section in the order fractal, slice, camera, render, shading.
+// Builds the table (parameter_table.cpp); everything else reads it through parameterTable().
+std::vector<Parameter> buildParameterTable();
+
 const std::vector<Parameter>& parameterTable();
 // The sections in table order.
 const std::vector<std::string>& parameterSections();

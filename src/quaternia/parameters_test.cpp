@@ -6,25 +6,16 @@
 
 #include <gtest/gtest.h>
 
+#include "test_helpers.h"
 #include "util/error.h"
 
 namespace quaternia {
 namespace {
 
+using namespace quaternia::testing;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// The UserError that `action` throws; fails the test if it throws none.
-template <typename Action>
-UserError thrownError(Action action) {
-    try {
-        action();
-    } catch (const UserError& error) {
-        return error;
-    }
-    ADD_FAILURE() << "no UserError thrown";
-    return UserError("", "");
-}
 
 UserError setError(std::string_view name, const ParameterValue& value) {
     Scene scene = defaultScene();

@@ -10,17 +10,13 @@
 #include <random>
 
 #include "formula.h"
+#include "test_helpers.h"
 #include "util/error.h"
 
 namespace quaternia {
 namespace {
 
-constexpr Quaternion kI = kUnitI, kJ = kUnitJ, kK = kUnitK;
-
-Quaternion randomQuaternion(std::mt19937& rng, double scale = 1.5) {
-    std::uniform_real_distribution<double> u(-scale, scale);
-    return {u(rng), u(rng), u(rng), u(rng)};
-}
+using namespace quaternia::testing;
 
 Quaternion randomUnit(std::mt19937& rng) {
     std::normal_distribution<double> g;

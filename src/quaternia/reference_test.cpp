@@ -36,6 +36,7 @@ TEST_P(ReferenceCase, SilhouetteMatchesBruteForceMask) {
         std::fprintf(stderr, "wrote %s_rendered.png and %s_difference.png\n", base.c_str(),
                      base.c_str());
     }
+    std::printf("%s: %s\n", id.c_str(), describe(comparison).c_str());
     RecordProperty("iou", std::to_string(comparison.iou));
 }
 

@@ -7,21 +7,13 @@
 #include <unistd.h>
 
 #include "parameters.h"
+#include "test_helpers.h"
 #include "util/error.h"
 
 namespace quaternia {
 namespace {
 
-template <typename Action>
-UserError thrownError(Action action) {
-    try {
-        action();
-    } catch (const UserError& error) {
-        return error;
-    }
-    ADD_FAILURE() << "no UserError thrown";
-    return UserError("", "");
-}
+using namespace quaternia::testing;
 
 UserError parseError(std::string_view text) {
     return thrownError([&] { parseScene(text, "scene.toml"); });

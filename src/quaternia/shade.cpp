@@ -89,7 +89,9 @@ Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingSta
     double keyDiffuse = std::max(0.0, dot(n, lightDirection_));
     double visibility = keyDiffuse > 0 ? shadow(lifted, stats) : 0;
     double occlusion =
-        1 - settings_.ambientOcclusion * (1 - ambientOcclusion(hit.outside, n, stats));
+        settings_.ambientOcclusion > 0
+            ? 1 - settings_.ambientOcclusion * (1 - ambientOcclusion(hit.outside, n, stats))
+            : 1;
     Vector3d halfway = normalize(lightDirection_ - ray.direction);
     double highlight =
         keyDiffuse > 0 ? std::pow(std::max(0.0, dot(n, halfway)), settings_.shininess) : 0;

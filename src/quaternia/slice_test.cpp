@@ -1,4 +1,5 @@
 #include "slice.h"
+#include "test_helpers.h"
 
 #include <gtest/gtest.h>
 
@@ -7,15 +8,10 @@
 namespace quaternia {
 namespace {
 
+using namespace quaternia::testing;
+
 SliceSettings defaultSlice() {
     return SliceSettings{Quaternion(0, 0, 0, 1), 0, Quaternion(1), Quaternion(1), {}};
-}
-
-void expectNear(const Quaternion& a, const Quaternion& b, double tolerance = 1e-12) {
-    EXPECT_NEAR(a.w, b.w, tolerance);
-    EXPECT_NEAR(a.x, b.x, tolerance);
-    EXPECT_NEAR(a.y, b.y, tolerance);
-    EXPECT_NEAR(a.z, b.z, tolerance);
 }
 
 TEST(Slice, DefaultSliceEmbedsXyzAsOneIJ) {
