@@ -20,11 +20,13 @@ runs = [json.loads(line) for line in sys.stdin]
 ms = statistics.median(r["seconds"] for r in runs) * 1000
 rate = statistics.median(r["rays_per_second"] for r in runs)
 r = runs[0]
-print(f"{sys.argv[1]:<28} {r[\"width\"]:>5}x{r[\"height\"]:<5} {r[\"samples\"]:>3} spp {ms:>10.1f} ms/frame {rate/1e6:>8.3f} Mrays/s  (median of {len(runs)}, {r[\"threads\"]} threads)")
+size = "%dx%d" % (r["width"], r["height"])
+print("%-24s %-10s %3d spp %9.1f ms/frame %8.3f Mrays/s  (median of %d, %d threads)"
+      % (sys.argv[1], size, r["samples"], ms, rate / 1e6, len(runs), r["threads"]))
 ' "$name"
 }
 
-echo "scene                         size         samples   time           speed"
+echo "scene                    size       samples   time per frame   speed"
 scene default-1080p --width 1920 --height 1080 --set render.samples=1
 scene default-preview-360p --width 640 --height 360 --set render.samples=1
 scene default-720p-4spp
