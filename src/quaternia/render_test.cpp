@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <set>
 
 #include "mask_compare.h"
@@ -138,6 +139,7 @@ TEST(Render, FixedStepAndSphereTracingSilhouettesAgree) {
         MaskComparison comparison =
             compareMasks(maskFromAlpha(traced.image), maskFromAlpha(stepped.image));
         EXPECT_GE(comparison.iou, 0.99) << id;
+        std::printf("%s fixed-step vs sphere: %s\n", id, describe(comparison).c_str());
     }
 }
 
