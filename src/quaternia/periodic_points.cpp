@@ -99,6 +99,37 @@ Complex multiplierOf(const ComplexPolynomial& f, const std::vector<Complex>& poi
     return multiplier;
 }
 
+void measure(const ComplexPolynomial& f, PeriodicCycle& cycle) {
+    const int n = int(cycle.points.size());
+    cycle.multiplier = multiplierOf(f, cycle.points, n);
+    cycle.residual = 0;
+    for (Complex z : cycle.points)
+        cycle.residual = std::max(cycle.residual, std::abs(iterate(f, z, n) - z));
+    cycle.classification = classifyMultiplier(cycle.multiplier);
+}
+
+// A cycle of period n collapsed onto one of period d: the cluster of roots around each point
+// of the d-cycle is replaced by its centroid (accurate where the single roots are not), then
+// polished by Newton on f^d(z) = z, a simple root unless the d-cycle's multiplier is 1.
+void collapse(const ComplexPolynomial& f, PeriodicCycle& cycle, int d) {
+    const int n = int(cycle.points.size());
+    Complex w = 0;
+    for (int k = 0; k < n; k += d)
+        w += cycle.points[k];
+    w /= double(n / d);
+    for (int step = 0; step < 8; ++step) {
+        Complex z = w, dz = 1;
+        for (int k = 0; k < d; ++k) {
+            dz *= f.derivative(z);
+            z = f.evaluate(z);
+        }
+        if (std::abs(dz - 1.0) <= kRootOfUnity) break;
+        w -= (z - w) / (dz - 1.0);
+    }
+    for (int k = 0; k < n; ++k)
+        cycle.points[k] = k % d == 0 ? w : f.evaluate(cycle.points[k - 1]);
+}
+
 void describe(const ComplexPolynomial& f, PeriodicCycle& cycle, int n, double scale) {
     auto least = std::min_element(cycle.points.begin(), cycle.points.end(),
                                   [](Complex a, Complex b) { return std::abs(a) < std::abs(b); });
@@ -111,13 +142,24 @@ void describe(const ComplexPolynomial& f, PeriodicCycle& cycle, int n, double sc
         if (std::abs(std::pow(multiplierOf(f, cycle.points, d), n / d) - 1.0) <= kRootOfUnity) {
             cycle.period = d;
             cycle.degenerate = true;
+            collapse(f, cycle, d);
             break;
         }
     }
-    cycle.multiplier = multiplierOf(f, cycle.points, n);
-    for (Complex z : cycle.points)
-        cycle.residual = std::max(cycle.residual, std::abs(iterate(f, z, n) - z));
-    cycle.classification = classifyMultiplier(cycle.multiplier);
+    measure(f, cycle);
+}
+
+// Merges a repeated cycle (a multiple root of h_n) into `into`: each point becomes the centroid
+// of the cluster, which is accurate where the single roots are only to sqrt(rounding).
+void merge(const ComplexPolynomial& f, PeriodicCycle& into, const PeriodicCycle& other) {
+    for (Complex& z : into.points) {
+        Complex nearest = *std::min_element(
+            other.points.begin(), other.points.end(),
+            [&](Complex a, Complex b) { return std::abs(a - z) < std::abs(b - z); });
+        z = (z * double(into.multiplicity) + nearest) / double(into.multiplicity + 1);
+    }
+    ++into.multiplicity;
+    measure(f, into);
 }
 
 bool sameCycle(const PeriodicCycle& a, const PeriodicCycle& b, double matchTolerance,
@@ -173,7 +215,7 @@ PeriodicPoints periodicPoints(const ComplexPolynomial& f, int period) {
             return sameCycle(c, cycle, matchTolerance, scale);
         });
         if (same != result.cycles.end()) {
-            ++same->multiplicity;
+            merge(f, *same, cycle);
         } else {
             result.cycles.push_back(std::move(cycle));
         }
