@@ -67,7 +67,7 @@ void printTable(const CyclesCommandOptions& options, const Quaternion& c,
             list += (list.empty() ? "" : " -> ") + formatComplex(z);
         std::printf("%4zu  %-28s %-13s %-16s %s%s\n", i + 1,
                     formatComplex(cycle.multiplier).c_str(),
-                    formatReal(std::abs(cycle.multiplier)).c_str(),
+                    formatComplex(std::abs(cycle.multiplier)).c_str(),
                     toString(cycle.classification.stability).c_str(), list.c_str(),
                     cycleNote(cycle).c_str());
     }

@@ -63,7 +63,7 @@ void printText(const OrbitCommandOptions& options, const Quaternion& c, const Qu
         if (cycle.multiplier) {
             std::printf("multiplier: %s (|lambda| = %s), %s\n",
                         formatComplex(*cycle.multiplier).c_str(),
-                        formatReal(std::abs(*cycle.multiplier)).c_str(),
+                        formatComplex(std::abs(*cycle.multiplier)).c_str(),
                         classText(cycle.complexClass).c_str());
         }
         std::string eigen;
