@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cycles_command.h"
+#include "orbit_command.h"
 #include "quaternia/parameters.h"
 #include "quaternia/util/error.h"
 #include "render_command.h"
@@ -23,6 +25,10 @@ int main(int argc, char** argv) {
         parameterHelp());
     RenderCommandOptions renderOptions;
     addRenderCommand(app, renderOptions);
+    OrbitCommandOptions orbitOptions;
+    addOrbitCommand(app, orbitOptions);
+    CyclesCommandOptions cyclesOptions;
+    addCyclesCommand(app, cyclesOptions);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -37,6 +43,8 @@ int main(int argc, char** argv) {
     }
     try {
         if (app.got_subcommand("render")) return runRenderCommand(renderOptions);
+        if (app.got_subcommand("orbit")) return runOrbitCommand(orbitOptions);
+        if (app.got_subcommand("cycles")) return runCyclesCommand(cyclesOptions);
     } catch (const UserError& e) {
         std::fprintf(stderr, "quaternia: error: %s\n", e.what());
         return 2;

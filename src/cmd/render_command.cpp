@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "json.h"
 #include "progress_bar.h"
 #include "quaternia/fractal.h"
 #include "quaternia/parameters.h"
@@ -20,23 +21,6 @@ std::atomic<bool> gInterrupted{false};
 
 extern "C" void onInterrupt(int) {
     gInterrupted = true;
-}
-
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (char ch : s) {
-        if (ch == '"' || ch == '\\') {
-            out += '\\';
-            out += ch;
-        } else if (static_cast<unsigned char>(ch) < 0x20) {
-            char buffer[8];
-            std::snprintf(buffer, sizeof buffer, "\\u%04x", ch);
-            out += buffer;
-        } else {
-            out += ch;
-        }
-    }
-    return out + "\"";
 }
 
 Scene sceneFromOptions(const RenderCommandOptions& options) {

@@ -1,0 +1,131 @@
+#include "cycles_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+#include "dynamics_input.h"
+#include "json.h"
+#include "quaternia/complex_polynomial.h"
+#include "quaternia/periodic_points.h"
+#include "quaternia/util/error.h"
+
+namespace quaternia {
+namespace {
+
+ComplexRestriction complexMap(const CyclesCommandOptions& options, const Quaternion& c) {
+    Polynomial p = compileMap(options.formula, c);
+    std::optional<ComplexRestriction> restriction = restrictToComplexPlane(p);
+    if (!restriction) {
+        throw UserError("--formula",
+                        "--formula: cycles needs a complex polynomial, but the coefficients of " +
+                            p.toString() + " do not lie in one plane C_u = span{1, u}");
+    }
+    return *restriction;
+}
+
+void checkPeriod(int period, int degree) {
+    if (period < 1 ||
+        period * std::log(double(degree)) > std::log(double(kMaxPeriodicPoints)) + 1e-9) {
+        throw UserError("--period", "--period must be at least 1 with degree^period <= " +
+                                        std::to_string(kMaxPeriodicPoints) + " (degree " +
+                                        std::to_string(degree) + "), got " +
+                                        std::to_string(period));
+    }
+}
+
+std::string cycleNote(const PeriodicCycle& cycle) {
+    std::vector<std::string> notes;
+    if (cycle.degenerate) notes.push_back("collapsed onto period " + std::to_string(cycle.period));
+    if (cycle.multiplicity > 1)
+        notes.push_back("multiplicity " + std::to_string(cycle.multiplicity));
+    if (!cycle.complete) notes.push_back("incomplete: an image matched no root");
+    if (cycle.classification.unsure) notes.push_back("class unsure");
+    std::string text;
+    for (const std::string& note : notes)
+        text += (text.empty() ? " (" : "; ") + note;
+    return text.empty() ? text : text + ")";
+}
+
+void printTable(const CyclesCommandOptions& options, const Quaternion& c,
+                const ComplexRestriction& map, const PeriodicPoints& points) {
+    std::printf("%s with c = %s: %lld point%s of period %d in %zu cycle%s\n",
+                options.formula.c_str(), formatQuaternion(c).c_str(),
+                static_cast<long long>(points.count), points.count == 1 ? "" : "s", points.period,
+                points.cycles.size(), points.cycles.size() == 1 ? "" : "s");
+    if (norm(map.axis - kUnitI) > 1e-12) {
+        std::printf("(complex numbers x+yi stand for x + y u in the plane C_u, u = %s)\n",
+                    formatQuaternion(map.axis).c_str());
+    }
+    std::printf("%4s  %-28s %-13s %-16s %s\n", "#", "multiplier", "|multiplier|", "class",
+                "points");
+    for (std::size_t i = 0; i < points.cycles.size(); ++i) {
+        const PeriodicCycle& cycle = points.cycles[i];
+        std::string list;
+        for (std::complex<double> z : cycle.points)
+            list += (list.empty() ? "" : " -> ") + formatComplex(z);
+        std::printf("%4zu  %-28s %-13s %-16s %s%s\n", i + 1,
+                    formatComplex(cycle.multiplier).c_str(),
+                    formatComplex(std::abs(cycle.multiplier)).c_str(),
+                    toString(cycle.classification.stability).c_str(), list.c_str(),
+                    cycleNote(cycle).c_str());
+    }
+}
+
+void printJson(const CyclesCommandOptions& options, const Quaternion& c,
+               const ComplexRestriction& map, const PeriodicPoints& points) {
+    std::ostringstream json;
+    json << "{\"command\": \"cycles\", \"formula\": " << jsonString(options.formula)
+         << ", \"c\": " << jsonQuaternion(c) << ", \"plane_axis\": " << jsonQuaternion(map.axis)
+         << ", \"period\": " << points.period << ", \"points\": " << points.count
+         << ", \"cycles\": [";
+    for (std::size_t i = 0; i < points.cycles.size(); ++i) {
+        const PeriodicCycle& cycle = points.cycles[i];
+        json << (i ? ", " : "") << "{\"period\": " << cycle.period << ", \"points\": [";
+        for (std::size_t k = 0; k < cycle.points.size(); ++k)
+            json << (k ? ", " : "") << jsonComplex(cycle.points[k]);
+        json << "], \"multiplier\": " << jsonComplex(cycle.multiplier)
+             << ", \"class\": " << jsonString(toString(cycle.classification.stability))
+             << ", \"unsure\": " << (cycle.classification.unsure ? "true" : "false")
+             << ", \"degenerate\": " << (cycle.degenerate ? "true" : "false")
+             << ", \"multiplicity\": " << cycle.multiplicity
+             << ", \"complete\": " << (cycle.complete ? "true" : "false")
+             << ", \"residual\": " << jsonNumber(cycle.residual) << "}";
+    }
+    std::printf("%s]}\n", json.str().c_str());
+}
+
+}  // namespace
+
+void addCyclesCommand(CLI::App& app, CyclesCommandOptions& options) {
+    CLI::App* cycles = app.add_subcommand(
+        "cycles", "All periodic points of one period of a complex polynomial, as cycles");
+    cycles
+        ->add_option("--formula", options.formula,
+                     "The map, a polynomial in z and c whose coefficients share a plane C_u")
+        ->capture_default_str();
+    cycles->add_option("--c", options.c, "The parameter c: a+bi (or a quaternion in one plane)")
+        ->capture_default_str();
+    cycles
+        ->add_option("--period", options.period,
+                     "The period n (degree^n <= " + std::to_string(kMaxPeriodicPoints) + ")")
+        ->capture_default_str();
+    cycles->add_flag("--json", options.json, "Print JSON instead of a table");
+}
+
+int runCyclesCommand(const CyclesCommandOptions& options) {
+    if (options.period < 1) checkPeriod(options.period, 2);
+    Quaternion c = parseConstant(options.c, "--c");
+    ComplexRestriction map = complexMap(options, c);
+    checkPeriod(options.period, map.polynomial.degree());
+    PeriodicPoints points = periodicPoints(map.polynomial, options.period);
+    if (options.json) {
+        printJson(options, c, map, points);
+    } else {
+        printTable(options, c, map, points);
+    }
+    return 0;
+}
+
+}  // namespace quaternia

@@ -1,0 +1,96 @@
+// `quaternia orbit` and `quaternia cycles` as a user meets them: the facts of ORACLES.md
+// (Cycles and multipliers) in text and JSON, and bad input as one line with exit code 2.
+#include "cli_fixture.h"
+
+namespace quaternia {
+namespace {
+
+using testing::CommandResult;
+
+class DynamicsCli : public testing::CliFixture {
+  protected:
+    // Runs a command that must succeed and returns its standard output.
+    std::string ok(const std::string& arguments) {
+        CommandResult r = run(arguments);
+        EXPECT_EQ(r.exitCode, 0) << arguments << ": " << r.err;
+        EXPECT_TRUE(r.err.empty()) << r.err;
+        return r.out;
+    }
+};
+
+void expectHas(const std::string& text, const std::string& needle) {
+    EXPECT_NE(text.find(needle), std::string::npos) << "'" << needle << "' in:\n" << text;
+}
+
+TEST_F(DynamicsCli, OrbitOfMinusOneIsSuperattracting2Cycle) {
+    std::string out = ok("orbit --c -1");
+    expectHas(out, "fate: periodic with period 2");
+    expectHas(out, "cycle: 0 -> -1");
+    expectHas(out, "multiplier: 0 (|lambda| = 0), superattracting");
+    expectHas(out, "K: connected");
+    std::string json = ok("orbit --c -1 --json");
+    expectHas(json, "\"fate\": \"periodic\"");
+    expectHas(json, "\"period\": 2, \"points\": [[0, 0, 0, 0], [-1, 0, 0, 0]]");
+    expectHas(json, "\"connectedness\": {\"connected\": true, \"cantor\": false");
+}
+
+TEST_F(DynamicsCli, OrbitOfIIsStrictlyPreperiodicAndSaddleFixedPoint) {
+    std::string out = ok("orbit --c i");
+    expectHas(out, "strictly preperiodic with preperiod 2 and period 2");
+    expectHas(out, "cycle: -1+i -> -i");
+    expectHas(out, "multiplier: 4+4i (|lambda| = 5.656854249), repelling");
+    // The fixed point (1 - sqrt(1 - 4i)) / 2 to 17 digits: a saddle in H.
+    std::string saddle = ok("orbit --c i --z0 '-0.30024259022012045+0.6248105338438266i'");
+    expectHas(saddle, "fate: fixed point");
+    expectHas(saddle, "|lambda| = 1.386410929), repelling");
+    expectHas(saddle, "-0.6004851804, -0.6004851804, saddle");
+}
+
+TEST_F(DynamicsCli, OrbitInQuaternionSliceAndEscape) {
+    std::string rabbit =
+        ok("orbit --c '-0.12256116687665+0.74486176661974i' --z0 "
+           "'0.05+0.02i+0.03j' --json");
+    expectHas(rabbit, "\"fate\": \"attracted\"");
+    expectHas(rabbit, "\"period\": 3");
+    expectHas(rabbit, "\"class_in_h\": \"superattracting\"");
+    std::string escape = ok("orbit --c 1");
+    expectHas(escape, "escapes at iteration 2");
+    expectHas(escape, "K: a Cantor set");
+}
+
+TEST_F(DynamicsCli, CyclesOfMinusOne) {
+    std::string fixed = ok("cycles --c -1 --period 1");
+    expectHas(fixed, "2 points of period 1 in 2 cycles");
+    expectHas(fixed, "3.236067977                  3.236067977   repelling        1.618033989");
+    expectHas(fixed, "-1.236067977                 1.236067977   repelling        -0.6180339887");
+    std::string two = ok("cycles --c -1 --period 2 --json");
+    expectHas(two, "\"cycles\": [{\"period\": 2, \"points\": [[0, 0], [-1, 0]]");
+    expectHas(two, "\"class\": \"superattracting\"");
+}
+
+TEST_F(DynamicsCli, CyclesOfIAndInPlaneOfJ) {
+    expectHas(ok("cycles --c i --period 2"),
+              "4+4i                         5.656854249   "
+              "repelling        -i -> -1+i");
+    // c in C_j: the same cycle, written in the coordinates of C_j.
+    std::string j = ok("cycles --c j --period 2");
+    expectHas(j, "u = j");
+    expectHas(j, "-i -> -1+i");
+}
+
+TEST_F(DynamicsCli, BadInputIsOneLineWithExitCode2) {
+    expectUserError(run("orbit --c 1+*2"), "--c");
+    expectUserError(run("orbit --c z"), "--c");
+    expectUserError(run("orbit --z0 c+1"), "--z0");
+    expectUserError(run("orbit --max-iterations 0"), "--max-iterations");
+    expectUserError(run("orbit --formula 'sin(z)'"), "--formula");
+    expectUserError(run("orbit --formula 'z + c'"), "--formula");
+    expectUserError(run("cycles --period -1"), "--period");
+    expectUserError(run("cycles --period 11"), "--period");
+    expectUserError(run("cycles --formula 'z^3 + c' --period 7"), "--period");
+    expectUserError(run("cycles --formula 'i*z*j*z + c' --c 0.1"), "complex polynomial");
+    expectUserError(run("cycles --c abc"), "--c");
+}
+
+}  // namespace
+}  // namespace quaternia

@@ -1,0 +1,29 @@
+// Shared by `quaternia orbit` and `quaternia cycles`: reading --c, --z0 and --formula, and
+// writing complex numbers and quaternions in the same a+bi+cj+dk form that --c reads back.
+#pragma once
+
+#include <complex>
+#include <string>
+
+#include "quaternia/polynomial.h"
+#include "quaternia/quaternion.h"
+
+namespace quaternia {
+
+// A constant such as "-1", "0.25+0.5i" or "1+2i-0.5j+k", read by the formula parser: it must
+// expand to a polynomial of degree 0 without the names z and c. Throws UserError naming
+// `option` (e.g. "--c") otherwise.
+Quaternion parseConstant(const std::string& text, const std::string& option);
+
+// The map of --formula with c substituted. Throws UserError naming --formula when it does not
+// parse, or when it has no escape radius (degree below 2, or possibly unbounded).
+Polynomial compileMap(const std::string& formula, const Quaternion& c);
+
+// 10 significant digits; components below 1e-12 of max(1, the largest component) (rounding
+// residue, as in 1e-17 + 0.62i) and negative zeros print as 0: "-1+i", "-i", "0.25",
+// "1+2i-0.5j+k".
+std::string formatComplex(std::complex<double> z);
+std::string formatQuaternion(const Quaternion& q);
+std::string formatReal(double value);
+
+}  // namespace quaternia

@@ -1,0 +1,185 @@
+#include "orbit_command.h"
+
+#include <cstdio>
+#include <sstream>
+
+#include "dynamics_input.h"
+#include "json.h"
+#include "quaternia/connectedness.h"
+#include "quaternia/orbit.h"
+#include "quaternia/util/error.h"
+
+namespace quaternia {
+namespace {
+
+std::string classText(const Classification& c) {
+    return toString(c.stability) + (c.unsure ? " (unsure)" : "");
+}
+
+std::string fateText(const OrbitResult& r) {
+    int period = r.cycle ? r.cycle->period() : 0;
+    std::string cycle = std::to_string(period) + "-cycle";
+    switch (r.fate) {
+        case OrbitFate::Escapes:
+            return "escapes at iteration " + std::to_string(r.escapeIteration) +
+                   " (|z| > escape radius " + formatReal(r.escapeRadius) + ")";
+        case OrbitFate::Periodic:
+            return period == 1 ? "fixed point" : "periodic with period " + std::to_string(period);
+        case OrbitFate::Preperiodic:
+            return "strictly preperiodic with preperiod " + std::to_string(r.preperiod) +
+                   " and period " + std::to_string(period);
+        case OrbitFate::Attracted:
+            return "attracted to a " + cycle + " (within " + formatReal(r.tolerance) +
+                   " of it from iteration " + std::to_string(r.preperiod) + ")";
+        case OrbitFate::Undecided:
+            return "undecided after " + std::to_string(r.iterations) + " iterations";
+    }
+    return "";
+}
+
+std::string connectednessText(const Connectedness& k) {
+    std::string text = k.connected ? "connected" : k.cantor ? "a Cantor set" : "disconnected";
+    text += " (critical orbit";
+    text += k.criticalOrbits.size() == 1 ? " " : "s ";
+    for (std::size_t i = 0; i < k.criticalOrbits.size(); ++i) {
+        const CriticalOrbit& critical = k.criticalOrbits[i];
+        text +=
+            (i ? ", " : "") + formatComplex(critical.point) + ": " + toString(critical.orbit.fate);
+    }
+    return text + ")" + (k.certain ? "" : ", not certain: an orbit stayed undecided");
+}
+
+void printText(const OrbitCommandOptions& options, const Quaternion& c, const Quaternion& z0,
+               const OrbitResult& r, const std::optional<Connectedness>& k) {
+    std::printf("orbit of z0 = %s under %s, c = %s\n", formatQuaternion(z0).c_str(),
+                options.formula.c_str(), formatQuaternion(c).c_str());
+    std::printf("fate: %s\n", fateText(r).c_str());
+    if (r.cycle) {
+        const CycleAnalysis& cycle = *r.cycle;
+        std::string points;
+        for (const Quaternion& w : cycle.points)
+            points += (points.empty() ? "" : " -> ") + formatQuaternion(w);
+        std::printf("cycle: %s\n", points.c_str());
+        if (cycle.multiplier) {
+            std::printf("multiplier: %s (|lambda| = %s), %s\n",
+                        formatComplex(*cycle.multiplier).c_str(),
+                        formatComplex(std::abs(*cycle.multiplier)).c_str(),
+                        classText(cycle.complexClass).c_str());
+        }
+        std::string eigen;
+        for (std::complex<double> e : cycle.eigenvalues)
+            eigen += (eigen.empty() ? "" : ", ") + formatComplex(e);
+        std::printf("in H: Jacobian eigenvalues %s, %s\n", eigen.c_str(),
+                    classText(cycle.classInH).c_str());
+    }
+    if (r.unsure) std::printf("unsure: %s\n", r.note.empty() ? "see the class" : r.note.c_str());
+    if (k) std::printf("K: %s\n", connectednessText(*k).c_str());
+}
+
+std::string jsonCycle(const CycleAnalysis& cycle) {
+    std::ostringstream json;
+    json << "{\"period\": " << cycle.period() << ", \"points\": [";
+    for (std::size_t i = 0; i < cycle.points.size(); ++i)
+        json << (i ? ", " : "") << jsonQuaternion(cycle.points[i]);
+    json << "], \"multiplier\": "
+         << (cycle.multiplier ? jsonComplex(*cycle.multiplier) : std::string("null"))
+         << ", \"plane_axis\": "
+         << (cycle.multiplier ? jsonQuaternion(cycle.axis) : std::string("null")) << ", \"class\": "
+         << (cycle.multiplier ? jsonString(toString(cycle.complexClass.stability)) : "null")
+         << ", \"class_in_h\": " << jsonString(toString(cycle.classInH.stability))
+         << ", \"eigenvalues\": [";
+    for (std::size_t i = 0; i < cycle.eigenvalues.size(); ++i)
+        json << (i ? ", " : "") << jsonComplex(cycle.eigenvalues[i]);
+    json << "], \"jacobian\": [";
+    for (int r = 0; r < 4; ++r) {
+        json << (r ? ", [" : "[");
+        for (int c = 0; c < 4; ++c)
+            json << (c ? ", " : "") << jsonNumber(cycle.jacobian[r][c]);
+        json << "]";
+    }
+    json << "], \"residual\": " << jsonNumber(cycle.residual)
+         << ", \"refined\": " << (cycle.refined ? "true" : "false") << "}";
+    return json.str();
+}
+
+std::string jsonOrbit(const OrbitResult& r) {
+    std::ostringstream json;
+    json << "\"fate\": " << jsonString(toString(r.fate)) << ", \"escape_iteration\": "
+         << (r.fate == OrbitFate::Escapes ? std::to_string(r.escapeIteration) : "null")
+         << ", \"preperiod\": " << r.preperiod
+         << ", \"period\": " << (r.cycle ? std::to_string(r.cycle->period()) : "null")
+         << ", \"class\": " << (r.cycle ? jsonString(toString(r.governingClass.stability)) : "null")
+         << ", \"unsure\": " << (r.unsure ? "true" : "false")
+         << ", \"note\": " << jsonString(r.note);
+    return json.str();
+}
+
+void printJson(const OrbitCommandOptions& options, const Quaternion& c, const Quaternion& z0,
+               const OrbitResult& r, const std::optional<Connectedness>& k) {
+    std::ostringstream json;
+    json << "{\"command\": \"orbit\", \"formula\": " << jsonString(options.formula)
+         << ", \"c\": " << jsonQuaternion(c) << ", \"z0\": " << jsonQuaternion(z0)
+         << ", \"max_iterations\": " << options.maxIterations << ", " << jsonOrbit(r)
+         << ", \"cycle\": " << (r.cycle ? jsonCycle(*r.cycle) : "null")
+         << ", \"escape_radius\": " << jsonNumber(r.escapeRadius)
+         << ", \"tolerance\": " << jsonNumber(r.tolerance) << ", \"iterations\": " << r.iterations
+         << ", \"connectedness\": ";
+    if (k) {
+        json << "{\"connected\": " << (k->connected ? "true" : "false")
+             << ", \"cantor\": " << (k->cantor ? "true" : "false")
+             << ", \"certain\": " << (k->certain ? "true" : "false") << ", \"critical_orbits\": [";
+        for (std::size_t i = 0; i < k->criticalOrbits.size(); ++i) {
+            const CriticalOrbit& critical = k->criticalOrbits[i];
+            json << (i ? ", " : "") << "{\"point\": " << jsonComplex(critical.point)
+                 << ", \"multiplicity\": " << critical.multiplicity << ", "
+                 << jsonOrbit(critical.orbit) << "}";
+        }
+        json << "]}";
+    } else {
+        json << "null";
+    }
+    std::printf("%s}\n", json.str().c_str());
+}
+
+}  // namespace
+
+void addOrbitCommand(CLI::App& app, OrbitCommandOptions& options) {
+    CLI::App* orbit = app.add_subcommand(
+        "orbit", "The fate of one orbit: escape, cycle (with multipliers and class) or undecided");
+    orbit->add_option("--formula", options.formula, "The map, a polynomial in z and c")
+        ->capture_default_str();
+    orbit->add_option("--c", options.c, "The parameter c: a+bi, or a quaternion a+bi+cj+dk")
+        ->capture_default_str();
+    orbit->add_option("--z0", options.z0, "The starting point, complex or quaternion")
+        ->capture_default_str();
+    orbit->add_option("--max-iterations", options.maxIterations, "Iterations before giving up")
+        ->capture_default_str();
+    orbit->add_flag("--json", options.json, "Print a machine-readable JSON report");
+}
+
+int runOrbitCommand(const OrbitCommandOptions& options) {
+    if (options.maxIterations < 1 || options.maxIterations > kMaxOrbitIterations) {
+        throw UserError("--max-iterations", "--max-iterations must be in [1, " +
+                                                std::to_string(kMaxOrbitIterations) + "], got " +
+                                                std::to_string(options.maxIterations));
+    }
+    Quaternion c = parseConstant(options.c, "--c");
+    Quaternion z0 = parseConstant(options.z0, "--z0");
+    Polynomial p = compileMap(options.formula, c);
+    OrbitOptions orbitOptions;
+    orbitOptions.maxIterations = options.maxIterations;
+    OrbitResult result = analyzeOrbit(p, z0, orbitOptions);
+    // Connectedness is a statement about the complex restriction's K (ORACLES.md, Mandelbrot).
+    std::optional<Connectedness> k;
+    if (auto restriction = restrictToComplexPlane(p)) {
+        k = connectedness(restriction->polynomial, options.maxIterations);
+    }
+    if (options.json) {
+        printJson(options, c, z0, result, k);
+    } else {
+        printText(options, c, z0, result, k);
+    }
+    return 0;
+}
+
+}  // namespace quaternia
