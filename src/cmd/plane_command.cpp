@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <sstream>
 
-#include "progress_bar.h"
 #include "quaternia/connectedness.h"
 #include "quaternia/parameters.h"
 #include "quaternia/plane_render.h"
@@ -77,21 +76,14 @@ int runPlaneCommand(const PlaneCommandOptions& options) {
     const std::string note = connectednessNote(scene);
     AtomicFile output(options.output);
 
-    PlaneImage image;
-    {
-        InterruptScope interrupt;
-        ProgressBar bar("drawing", !options.json && ProgressBar::stderrIsTerminal());
+    PlaneImage image = runInterruptibly("drawing", options.json, [&](auto cancel, auto progress) {
         PlaneRenderOptions planeOptions;
         planeOptions.threads = options.threads;
-        planeOptions.cancel = interrupt.flag();
-        planeOptions.progress = [&](double fraction) { bar.update(fraction); };
-        image = renderPlane(scene, planeOptions);
-        bar.finish();
-    }
-    if (!image.completed) {
-        std::fprintf(stderr, "quaternia: interrupted, nothing written\n");
-        return 130;
-    }
+        planeOptions.cancel = cancel;
+        planeOptions.progress = progress;
+        return renderPlane(scene, planeOptions);
+    });
+    if (!image.completed) return reportInterrupted();
     output.write(encodePng(image.image, scene.render.bitDepth));
     output.commit();
     printSummary(options, scene, image, note);

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <sstream>
 
-#include "progress_bar.h"
 #include "quaternia/fractal.h"
 #include "quaternia/parameters.h"
 #include "quaternia/png_io.h"
@@ -64,22 +63,16 @@ int runRenderCommand(const RenderCommandOptions& options) {
     std::optional<AtomicFile> depthOutput;
     if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);
 
-    RenderResult result;
-    {
-        InterruptScope interrupt;
-        ProgressBar bar("rendering", !options.json && ProgressBar::stderrIsTerminal());
-        RenderOptions renderOptions;
-        renderOptions.threads = options.threads;
-        renderOptions.cancel = interrupt.flag();
-        renderOptions.progress = [&](double fraction) { bar.update(fraction); };
-        renderOptions.depth = depthOutput.has_value();
-        result = render(scene, renderOptions);
-        bar.finish();
-    }
-    if (!result.completed) {
-        std::fprintf(stderr, "quaternia: interrupted, nothing written\n");
-        return 130;
-    }
+    RenderResult result =
+        runInterruptibly("rendering", options.json, [&](auto cancel, auto progress) {
+            RenderOptions renderOptions;
+            renderOptions.threads = options.threads;
+            renderOptions.cancel = cancel;
+            renderOptions.progress = progress;
+            renderOptions.depth = depthOutput.has_value();
+            return render(scene, renderOptions);
+        });
+    if (!result.completed) return reportInterrupted();
 
     auto png = encodePng(result.image, scene.render.bitDepth);
     output.write(png.data(), png.size());

@@ -75,4 +75,9 @@ const std::atomic<bool>* InterruptScope::flag() const {
     return &gInterrupted;
 }
 
+int reportInterrupted() {
+    std::fprintf(stderr, "quaternia: interrupted, nothing written\n");
+    return 130;
+}
+
 }  // namespace quaternia

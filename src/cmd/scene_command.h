@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "progress_bar.h"
 #include "quaternia/scene.h"
 
 namespace quaternia {
@@ -49,5 +50,19 @@ class InterruptScope {
   private:
     void (*previous_)(int);
 };
+
+// Runs work(cancel, progress) with Ctrl-C caught (InterruptScope) and a progress bar labelled
+// `label` on a terminal (none with `quiet`), and returns what it returns.
+template <typename Work>
+auto runInterruptibly(const char* label, bool quiet, Work work) {
+    InterruptScope interrupt;
+    ProgressBar bar(label, !quiet && ProgressBar::stderrIsTerminal());
+    auto result = work(interrupt.flag(), [&](double fraction) { bar.update(fraction); });
+    bar.finish();
+    return result;
+}
+
+// Says on stderr that the work was interrupted and nothing written; returns exit code 130.
+int reportInterrupted();
 
 }  // namespace quaternia

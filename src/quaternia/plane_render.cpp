@@ -55,15 +55,7 @@ PlaneImage renderSamples(const PlaneView& view, int samples, const PlaneRenderOp
                          const Sampler& sample) {
     PlaneImage result;
     result.image = Image(view.pixelWidth, view.pixelHeight);
-    ParallelOptions parallel;
-    parallel.threads = resolveThreadCount(options.threads);
-    parallel.tileSize = 16;
-    parallel.cancel = options.cancel;
-    if (options.progress) {
-        parallel.progress = [&](int64_t done, int64_t total) {
-            options.progress(double(done) / double(total));
-        };
-    }
+    const ParallelOptions parallel = imageParallelOptions(options);
     auto start = std::chrono::steady_clock::now();
     result.completed =
         parallelForTiles(view.pixelWidth, view.pixelHeight, parallel, [&](const Tile& tile, int) {

@@ -5,22 +5,17 @@
 // as the 3D renderer takes them (samplePosition), tiles spread by the one parallel-for.
 #pragma once
 
-#include <atomic>
 #include <cstdint>
-#include <functional>
 
 #include "complex_polynomial.h"
 #include "image.h"
 #include "plane_view.h"
+#include "render.h"
 #include "scene.h"
 
 namespace quaternia {
 
-struct PlaneRenderOptions {
-    int threads = 0;                                // 0 = every core
-    const std::atomic<bool>* cancel = nullptr;      // set to stop early; the result says so
-    std::function<void(double fraction)> progress;  // serialised calls, fraction of tiles done
-};
+using PlaneRenderOptions = ImageOptions;
 
 struct PlaneImage {
     Image image;  // display values, alpha 1
