@@ -7,6 +7,7 @@
 
 #include "cycles_command.h"
 #include "orbit_command.h"
+#include "plane_command.h"
 #include "quaternia/parameters.h"
 #include "quaternia/util/error.h"
 #include "render_command.h"
@@ -20,7 +21,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "quaternia 0.1.0");
     app.footer(
-        "Run `quaternia render --help` for the render options.\n\nScene keys (scene file "
+        "Run `quaternia render --help` or `quaternia plane --help` for their options.\n\nScene "
+        "keys (scene file "
         "sections, or --set section.key=value):\n" +
         parameterHelp());
     RenderCommandOptions renderOptions;
@@ -29,6 +31,8 @@ int main(int argc, char** argv) {
     addOrbitCommand(app, orbitOptions);
     CyclesCommandOptions cyclesOptions;
     addCyclesCommand(app, cyclesOptions);
+    PlaneCommandOptions planeOptions;
+    addPlaneCommand(app, planeOptions);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -45,6 +49,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("render")) return runRenderCommand(renderOptions);
         if (app.got_subcommand("orbit")) return runOrbitCommand(orbitOptions);
         if (app.got_subcommand("cycles")) return runCyclesCommand(cyclesOptions);
+        if (app.got_subcommand("plane")) return runPlaneCommand(planeOptions);
     } catch (const UserError& e) {
         std::fprintf(stderr, "quaternia: error: %s\n", e.what());
         return 2;

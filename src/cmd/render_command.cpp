@@ -1,36 +1,17 @@
 #include "render_command.h"
 
-#include <csignal>
 #include <cstdio>
 #include <sstream>
 
-#include "json.h"
-#include "progress_bar.h"
 #include "quaternia/fractal.h"
 #include "quaternia/parameters.h"
 #include "quaternia/png_io.h"
 #include "quaternia/render.h"
-#include "quaternia/scene_file.h"
 #include "quaternia/util/atomic_file.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
 namespace {
-
-std::atomic<bool> gInterrupted{false};
-
-extern "C" void onInterrupt(int) {
-    gInterrupted = true;
-}
-
-Scene sceneFromOptions(const RenderCommandOptions& options) {
-    Scene scene = options.scenePath.empty() ? defaultScene() : loadScene(options.scenePath);
-    for (const std::string& assignment : options.overrides)
-        applyOverride(scene, assignment);
-    if (options.width) setParameter(scene, "render.width", *options.width);
-    if (options.height) setParameter(scene, "render.height", *options.height);
-    return scene;
-}
 
 void printSummary(const RenderCommandOptions& options, const Scene& scene,
                   const RenderStats& stats) {
@@ -65,29 +46,14 @@ void printSummary(const RenderCommandOptions& options, const Scene& scene,
 
 void addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
     CLI::App* render = app.add_subcommand("render", "Render a quaternion Julia set to a PNG");
-    render->add_option("scene", options.scenePath,
-                       "Scene file (TOML); without one the embedded default scene renders");
-    render->add_option("-o,--output", options.output, "Output PNG (RGBA, alpha = coverage)")
-        ->capture_default_str();
-    render->add_option("--width", options.width, "Image width in pixels (render.width)");
-    render->add_option("--height", options.height, "Image height in pixels (render.height)");
-    render->add_option("--set", options.overrides,
-                       "Override a scene key: section.key=value, value in TOML syntax "
-                       "(a bare word is a string); repeatable");
-    render->add_option("--threads", options.threads, "Worker threads (0 = every core)")
-        ->capture_default_str();
+    addSceneOptions(*render, options, "Output PNG (RGBA, alpha = coverage)");
     render->add_option("--depth", options.depthOutput,
                        "Also write a 16-bit grey depth pass to this PNG");
-    render->add_flag("--json", options.json, "Print a machine-readable JSON summary");
     render->footer("Scene keys (scene file sections, or --set section.key=value):\n" +
                    parameterHelp());
 }
 
 int runRenderCommand(const RenderCommandOptions& options) {
-    if (options.threads < 0 || options.threads > 1024) {
-        throw UserError("--threads",
-                        "--threads must be in [0, 1024], got " + std::to_string(options.threads));
-    }
     Scene scene = sceneFromOptions(options);
     // Every check that can fail runs before the work: the scene, the formula, and whether the
     // outputs can be written (a temporary file beside each, renamed over it at the end).
@@ -97,21 +63,16 @@ int runRenderCommand(const RenderCommandOptions& options) {
     std::optional<AtomicFile> depthOutput;
     if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);
 
-    gInterrupted = false;
-    auto previousHandler = std::signal(SIGINT, onInterrupt);
-    ProgressBar bar("rendering", !options.json && ProgressBar::stderrIsTerminal());
-    RenderOptions renderOptions;
-    renderOptions.threads = options.threads;
-    renderOptions.cancel = &gInterrupted;
-    renderOptions.progress = [&](double fraction) { bar.update(fraction); };
-    renderOptions.depth = depthOutput.has_value();
-    RenderResult result = render(scene, renderOptions);
-    bar.finish();
-    std::signal(SIGINT, previousHandler);
-    if (!result.completed) {
-        std::fprintf(stderr, "quaternia: interrupted, nothing written\n");
-        return 130;
-    }
+    RenderResult result =
+        runInterruptibly("rendering", options.json, [&](auto cancel, auto progress) {
+            RenderOptions renderOptions;
+            renderOptions.threads = options.threads;
+            renderOptions.cancel = cancel;
+            renderOptions.progress = progress;
+            renderOptions.depth = depthOutput.has_value();
+            return render(scene, renderOptions);
+        });
+    if (!result.completed) return reportInterrupted();
 
     auto png = encodePng(result.image, scene.render.bitDepth);
     output.write(png.data(), png.size());

@@ -1,23 +1,17 @@
 // `quaternia render`: options, and running a render from them.
 #pragma once
 
-#include <cstdint>
-#include <optional>
 #include <string>
-#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "scene_command.h"
+
 namespace quaternia {
 
-struct RenderCommandOptions {
-    std::string scenePath;  // empty: the embedded default scene
-    std::string output = "quaternia.png";
-    std::string depthOutput;               // empty: no depth pass
-    std::optional<int64_t> width, height;  // unset: from the scene
-    std::vector<std::string> overrides;    // section.key=value
-    int threads = 0;
-    bool json = false;
+struct RenderCommandOptions : SceneCommandOptions {
+    RenderCommandOptions() { output = "quaternia.png"; }
+    std::string depthOutput;  // empty: no depth pass
 };
 
 void addRenderCommand(CLI::App& app, RenderCommandOptions& options);

@@ -98,10 +98,7 @@ DistanceEstimate estimateWith(const Map& map, const IterationLimits& limits, con
     result.iterations = n + extra;
     // d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2) ln |z|^2.
     result.distance = std::max(0.0, 0.25 * std::sqrt(r2 / derivativeSquared) * std::log(r2));
-    // Continuous escape count (renormalised iteration count) for colouring.
-    double d = std::max(2, limits.degree);
-    result.smoothIteration =
-        n + extra + 1 - std::log(std::max(1e-12, 0.5 * std::log(r2))) / std::log(d);
+    result.smoothIteration = smoothEscapeCount(n + extra, r2, limits.degree);
     return result;
 }
 
@@ -125,6 +122,11 @@ auto withMap(const std::optional<PowerForm>& power, const Polynomial& polynomial
 }
 
 }  // namespace
+
+double smoothEscapeCount(int n, double radiusSquared, int degree) {
+    double d = std::max(2, degree);
+    return n + 1 - std::log(std::max(1e-12, 0.5 * std::log(radiusSquared))) / std::log(d);
+}
 
 JuliaSet::JuliaSet(Polynomial polynomial, int maxIterations, double bailout)
     : polynomial_(std::move(polynomial)),

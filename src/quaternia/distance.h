@@ -35,6 +35,12 @@ struct DistanceEstimate {
     double smoothIteration = 0;  // continuous escape count, for colouring
 };
 
+// The continuous escape count n + 1 - log_d(ln|z_n|) of an orbit that has |z_n|^2 = radiusSquared
+// after n iterations, far outside the set: the renormalised iteration count (Vepstas 1997;
+// Peitgen, Richter 1986), continuous in z_0 because ln|z_{n+1}| ~ d ln|z_n| there. Degrees
+// below 2 count as 2.
+double smoothEscapeCount(int n, double radiusSquared, int degree);
+
 // The filled Julia set K_N of p: points whose iterates z_0 .. z_{N-1} all satisfy |z| <= bailout
 // (POV-Ray's convention, tests/data/reference), N = max_iterations.
 class JuliaSet {

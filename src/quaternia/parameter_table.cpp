@@ -97,8 +97,9 @@ template <std::size_t N, typename Section, typename Field>
 Parameter vectorParameter(std::string section, std::string key, Section Scene::*part,
                           Field Section::*field, const double (&defaultValue)[N], double minimum,
                           double maximum, std::string help) {
-    static_assert(N == 3 || N == 4 || N == 6);
-    ParameterType type = N == 3   ? ParameterType::Vector3
+    static_assert(N == 2 || N == 3 || N == 4 || N == 6);
+    ParameterType type = N == 2   ? ParameterType::Vector2
+                         : N == 3 ? ParameterType::Vector3
                          : N == 4 ? ParameterType::Vector4
                                   : ParameterType::Vector6;
     Parameter p = makeParameter(std::move(section), std::move(key), type,
@@ -127,6 +128,7 @@ std::vector<Parameter> buildParameterTable() {
     using C = CameraSettings;
     using R = RenderSettings;
     using H = ShadingSettings;
+    using P = PlaneSettings;
     return {
         // [fractal]
         textParameter("fractal", "formula", &S::fractal, &F::formula, "z^2 + c", 1, 1000,
@@ -242,6 +244,37 @@ std::vector<Parameter> buildParameterTable() {
                       "Display gamma of the encoded image (2.2 is close to sRGB)"),
         realParameter("shading", "exposure", &S::shading, &H::exposure, 1, 0, 100,
                       "Multiplies linear radiance before gamma encoding; 1 leaves it as is"),
+        // [plane]
+        choiceParameter("plane", "kind", &S::plane, &P::kind, "julia",
+                        {{"julia", PlaneKind::Julia},
+                         {"julia-boundary", PlaneKind::JuliaBoundary},
+                         {"mandelbrot", PlaneKind::Mandelbrot},
+                         {"basins", PlaneKind::Basins},
+                         {"slice", PlaneKind::Slice}},
+                        "`quaternia plane` image: filled Julia set K_c (smooth escape colours), "
+                        "its boundary J_c, the Mandelbrot set of z^d + c, basins of attraction, "
+                        "or a slice plane.origin + x plane.u + y plane.v through H"),
+        vectorParameter("plane", "center", &S::plane, &P::center, {0, 0}, -1e6, 1e6,
+                        "The plane point (x, y) at the image centre; for julia, mandelbrot and "
+                        "basins the complex number x + y i"),
+        realParameter("plane", "width", &S::plane, &P::width, 4, 1e-12, 1e6,
+                      "Width of the view in plane units (the height follows the image's aspect)"),
+        realParameter("plane", "rotation", &S::plane, &P::rotationDegrees, 0, -360, 360,
+                      "Counter-clockwise rotation of the view about its centre, in degrees"),
+        integerParameter("plane", "max_iterations", &S::plane, &P::maxIterations, 256, 1, 1000000,
+                         "Iterations of every plane kind before a point counts as inside (the 3D "
+                         "render's fractal.max_iterations is usually far fewer)"),
+        vectorParameter("plane", "origin", &S::plane, &P::origin, {0, 0, 0, 0}, -1e6, 1e6,
+                        "Slice kind: the point (1, i, j, k) of H at plane coordinates (0, 0)"),
+        vectorParameter("plane", "u", &S::plane, &P::u, {1, 0, 0, 0}, -1e6, 1e6,
+                        "Slice kind: the direction in H of the image's x axis; one plane unit "
+                        "is its length"),
+        vectorParameter("plane", "v", &S::plane, &P::v, {0, 1, 0, 0}, -1e6, 1e6,
+                        "Slice kind: the direction in H of the image's y axis (up); must not be "
+                        "parallel to plane.u"),
+        realParameter("plane", "boundary_width", &S::plane, &P::boundaryWidth, 0.75, 0.01, 100,
+                      "julia-boundary: J_c is drawn where the distance estimate is below this "
+                      "many pixels"),
     };
 }
 

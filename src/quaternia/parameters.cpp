@@ -87,6 +87,8 @@ std::string joinAlternatives(const std::vector<std::string>& items) {
 
 std::size_t vectorLength(ParameterType type) {
     switch (type) {
+        case ParameterType::Vector2:
+            return 2;
         case ParameterType::Vector3:
             return 3;
         case ParameterType::Vector4:
@@ -110,6 +112,8 @@ const char* typeName(ParameterType type) {
             return "text";
         case ParameterType::Choice:
             return "choice";
+        case ParameterType::Vector2:
+            return "2 reals";
         case ParameterType::Vector3:
             return "3 reals";
         case ParameterType::Vector4:
@@ -328,6 +332,7 @@ ParameterValue checkedValue(const Parameter& p, const ParameterValue& value) {
         case ParameterType::Text:
         case ParameterType::Choice:
             return checkedText(p, value);
+        case ParameterType::Vector2:
         case ParameterType::Vector3:
         case ParameterType::Vector4:
         case ParameterType::Vector6:
@@ -410,6 +415,7 @@ std::string describeType(const Parameter& p) {
             return "a string";
         case ParameterType::Choice:
             return describeRange(p);
+        case ParameterType::Vector2:
         case ParameterType::Vector3:
         case ParameterType::Vector4:
         case ParameterType::Vector6:
@@ -439,6 +445,7 @@ std::string describeRange(const Parameter& p) {
                 words.push_back(quoted(choice));
             return joinAlternatives(words);
         }
+        case ParameterType::Vector2:
         case ParameterType::Vector3:
         case ParameterType::Vector4:
         case ParameterType::Vector6:

@@ -23,7 +23,17 @@ namespace quaternia {
 // Reals are double, integers int64_t, choices and text std::string, vectors std::vector<double>.
 using ParameterValue = std::variant<double, int64_t, bool, std::string, std::vector<double>>;
 
-enum class ParameterType { Real, Integer, Boolean, Text, Choice, Vector3, Vector4, Vector6 };
+enum class ParameterType {
+    Real,
+    Integer,
+    Boolean,
+    Text,
+    Choice,
+    Vector2,
+    Vector3,
+    Vector4,
+    Vector6
+};
 
 struct Parameter {
     std::string section, key;
@@ -45,7 +55,7 @@ struct Parameter {
     std::function<ParameterValue(const Scene&)> read;
 };
 
-// Every parameter, grouped by section in the order fractal, slice, camera, render, shading.
+// Every parameter, grouped by section in the order fractal, slice, camera, render, shading, plane.
 // Builds the table (parameter_table.cpp); everything else reads it through parameterTable().
 std::vector<Parameter> buildParameterTable();
 

@@ -55,17 +55,17 @@ ParameterValue alternativeValue(const Parameter& p) {
 
 TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
     const auto& table = parameterTable();
-    EXPECT_EQ(table.size(), 39u);  // every field of Scene (scene.h)
+    EXPECT_EQ(table.size(), 48u);  // every field of Scene (scene.h)
     std::set<std::string> names;
     for (const auto& p : table) {
         EXPECT_TRUE(names.insert(p.name()).second) << p.name() << " is declared twice";
         EXPECT_EQ(findParameter(p.name()), &p);
         EXPECT_FALSE(p.help.empty()) << p.name();
     }
-    EXPECT_EQ(parameterSections(),
-              (std::vector<std::string>{"fractal", "slice", "camera", "render", "shading"}));
+    EXPECT_EQ(parameterSections(), (std::vector<std::string>{"fractal", "slice", "camera", "render",
+                                                             "shading", "plane"}));
     EXPECT_EQ(table.front().name(), "fractal.formula");
-    EXPECT_EQ(table.back().name(), "shading.exposure");
+    EXPECT_EQ(table.back().name(), "plane.boundary_width");
     EXPECT_EQ(findParameter("render"), nullptr);
     EXPECT_EQ(findParameter("render.widt"), nullptr);
     EXPECT_EQ(findParameter("render.width.x"), nullptr);

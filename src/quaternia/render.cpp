@@ -47,6 +47,19 @@ std::array<double, 2> samplePosition(int k, int n, int px, int py) {
     return {(k % columns + jx) / columns, (k / columns + jy) / rows};
 }
 
+ParallelOptions imageParallelOptions(const ImageOptions& options) {
+    ParallelOptions parallel;
+    parallel.threads = resolveThreadCount(options.threads);
+    parallel.tileSize = 16;
+    parallel.cancel = options.cancel;
+    if (options.progress) {
+        parallel.progress = [progress = options.progress](int64_t done, int64_t total) {
+            progress(double(done) / double(total));
+        };
+    }
+    return parallel;
+}
+
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     validateScene(scene);
     const Fractal fractal = Fractal::fromScene(scene);
@@ -63,15 +76,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     result.image = Image(settings.width, settings.height);
     if (options.depth) result.depth = GrayImage(settings.width, settings.height);
 
-    ParallelOptions parallel;
-    parallel.threads = resolveThreadCount(options.threads);
-    parallel.tileSize = 16;
-    parallel.cancel = options.cancel;
-    if (options.progress) {
-        parallel.progress = [&](int64_t done, int64_t total) {
-            options.progress(double(done) / double(total));
-        };
-    }
+    const ParallelOptions parallel = imageParallelOptions(options);
     std::vector<ThreadTotals> totals(parallel.threads);
     const int samples = settings.samples;
 

@@ -9,14 +9,19 @@
 
 #include "image.h"
 #include "scene.h"
+#include "util/parallel.h"
 
 namespace quaternia {
 
-struct RenderOptions {
+// How any image is computed (3D renders, plane images): threads, cancellation, progress.
+struct ImageOptions {
     int threads = 0;                                // 0 = every core
     const std::atomic<bool>* cancel = nullptr;      // set to stop early; the result says so
     std::function<void(double fraction)> progress;  // serialised calls, fraction of tiles done
-    bool depth = false;                             // also fill RenderResult::depth
+};
+
+struct RenderOptions : ImageOptions {
+    bool depth = false;  // also fill RenderResult::depth
 };
 
 struct RenderStats {
@@ -44,6 +49,10 @@ struct RenderResult {
 
 // Validates the scene (throws UserError naming the bad key) before any work starts.
 RenderResult render(const Scene& scene, const RenderOptions& options = {});
+
+// The parallel-for settings of an image: 16-pixel tiles, the options' threads resolved, their
+// cancel flag, and their progress (if set) called with the fraction of tiles done.
+ParallelOptions imageParallelOptions(const ImageOptions& options);
 
 // Sample k of n within a pixel, in [0, 1)^2: a stratified grid jittered by a hash of the pixel,
 // so images are reproducible; the single sample is the pixel centre.

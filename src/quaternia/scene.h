@@ -74,12 +74,29 @@ struct ShadingSettings {
     double exposure = 0;
 };
 
+// `quaternia plane`: 2D images (plane_render.h). The filled Julia set K_c with smooth escape
+// colouring, the Julia set J_c drawn by its distance estimate, the Mandelbrot set of z^d + c,
+// basins of attraction, or a plane through H (origin + x u + y v). Image size, anti-aliasing
+// and bit depth come from [render], the polynomial, c and bailout from [fractal].
+enum class PlaneKind { Julia, JuliaBoundary, Mandelbrot, Basins, Slice };
+
+struct PlaneSettings {
+    PlaneKind kind = PlaneKind::Julia;
+    std::array<double, 2> center{};  // the plane point at the image centre
+    double width = 0;                // plane units across the image
+    double rotationDegrees = 0;      // counter-clockwise turn of the view
+    int maxIterations = 0;           // for every plane kind; fractal.max_iterations is the 3D one
+    Quaternion origin, u, v;         // slice kind: the plane origin + x u + y v of H
+    double boundaryWidth = 0;        // julia-boundary: J_c is lit where DE < this many pixels
+};
+
 struct Scene {
     FractalSettings fractal;
     SliceSettings slice;
     CameraSettings camera;
     RenderSettings render;
     ShadingSettings shading;
+    PlaneSettings plane;
 };
 
 }  // namespace quaternia

@@ -1,0 +1,59 @@
+// `quaternia plane` as a user meets it.
+#include "cli_fixture.h"
+
+namespace quaternia {
+namespace {
+
+using PlaneCli = testing::CliFixture;
+using testing::CommandResult;
+using testing::readFile;
+
+const std::string kSmall = " --width 32 --height 24 --set render.samples=1 --threads 2";
+
+TEST_F(PlaneCli, DrawsJuliaSetWithConnectednessNote) {
+    CommandResult r = run("plane -o " + output() + kSmall + " --set 'fractal.c=[-1, 0, 0, 0]'");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(readFile(output()).substr(1, 3), "PNG");
+    EXPECT_NE(r.out.find("32x24"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("K is connected"), std::string::npos) << r.out;
+    r = run("plane -o " + output() + kSmall + " --set 'fractal.c=[0.5, 0.5, 0, 0]'");
+    EXPECT_NE(r.out.find("Cantor set"), std::string::npos) << r.out;
+}
+
+TEST_F(PlaneCli, MandelbrotAndSliceWithJsonSummary) {
+    CommandResult r = run("plane --json -o " + output() + kSmall +
+                          " --set plane.kind=mandelbrot --set 'plane.center=[-0.5, 0]'");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("\"kind\": \"mandelbrot\""), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"note\": null"), std::string::npos) << r.out;
+    r = run("plane --json -o " + output() + kSmall +
+            " --set plane.kind=slice --set 'fractal.formula=\"i*z*j*z + c\"'"
+            " --set 'plane.v=[0, 0, 1, 0]'");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("\"kind\": \"slice\""), std::string::npos) << r.out;
+}
+
+TEST_F(PlaneCli, HelpListsThePlaneKeys) {
+    CommandResult r = run("plane --help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* key : {"plane.kind", "plane.center", "plane.width", "plane.rotation",
+                            "plane.origin", "plane.u", "plane.v", "julia-boundary", "--threads"})
+        EXPECT_NE(r.out.find(key), std::string::npos) << key;
+}
+
+TEST_F(PlaneCli, BadInputIsOneLineErrorWithoutOutput) {
+    const std::string o = "plane -o " + output() + kSmall;
+    expectUserError(run(o + " --set plane.kind=spiral"), "plane.kind");
+    expectUserError(run(o + " --set plane.width=0"), "plane.width");
+    expectUserError(run("plane -o " + output() + " --width 0"), "render.width");
+    expectUserError(run(o + " --set plane.kind=slice --set 'plane.u=[0, 0, 0, 0]'"), "plane.u");
+    expectUserError(run(o + " --set plane.kind=slice --set 'plane.v=[-3, 0, 0, 0]'"), "plane.v");
+    expectUserError(run(o + " --set 'fractal.formula=\"i*z*j*z + c\"'"), "fractal.formula");
+    expectUserError(run(o + " --set plane.kind=mandelbrot --set 'fractal.formula=\"z^2 + z\"'"),
+                    "fractal.formula");
+    expectUserError(run("plane -o " + (dir_ / "missing" / "out.png").string() + kSmall),
+                    "missing/out.png");
+}
+
+}  // namespace
+}  // namespace quaternia

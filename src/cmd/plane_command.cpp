@@ -1,0 +1,90 @@
+#include "plane_command.h"
+
+#include <cstdio>
+#include <sstream>
+
+#include "quaternia/connectedness.h"
+#include "quaternia/parameters.h"
+#include "quaternia/plane_render.h"
+#include "quaternia/png_io.h"
+#include "quaternia/util/atomic_file.h"
+
+namespace quaternia {
+namespace {
+
+// For the kinds that draw one complex polynomial: whether its K is connected, from the
+// critical orbits (connectedness.h); empty for the others.
+std::string connectednessNote(const Scene& scene) {
+    PlaneKind kind = scene.plane.kind;
+    if (kind != PlaneKind::Julia && kind != PlaneKind::JuliaBoundary && kind != PlaneKind::Basins)
+        return {};
+    ComplexPolynomial p = complexRestrictionOfScene(scene).polynomial;
+    if (p.degree() < 2) return {};
+    Connectedness k = connectedness(p, scene.plane.maxIterations);
+    std::string hedge = k.certain ? "" : " (within plane.max_iterations)";
+    if (k.cantor)
+        return "K is a Cantor set: every critical orbit escapes (for z^2 + c, c is not in M)";
+    if (!k.connected) return "K is disconnected: some critical orbits escape, others stay bounded";
+    return "K is connected: every critical orbit stays bounded" + hedge +
+           " (for z^2 + c, c is in M)";
+}
+
+void printSummary(const PlaneCommandOptions& options, const Scene& scene, const PlaneImage& image,
+                  const std::string& note) {
+    const std::string kind = std::get<std::string>(findParameter("plane.kind")->read(scene));
+    if (!options.json) {
+        std::printf(
+            "quaternia: wrote %s (%s, %dx%d, %d sample%s per pixel) in %.2f s, %d thread%s\n",
+            options.output.c_str(), kind.c_str(), scene.render.width, scene.render.height,
+            scene.render.samples, scene.render.samples == 1 ? "" : "s", image.seconds,
+            image.threads, image.threads == 1 ? "" : "s");
+        if (!note.empty()) std::printf("note: %s\n", note.c_str());
+        return;
+    }
+    std::ostringstream json;
+    json.precision(6);
+    json << "{\"command\": \"plane\", \"kind\": " << jsonString(kind)
+         << ", \"output\": " << jsonString(options.output) << ", \"width\": " << scene.render.width
+         << ", \"height\": " << scene.render.height << ", \"samples\": " << scene.render.samples
+         << ", \"formula\": " << jsonString(scene.fractal.formula) << ", \"c\": ["
+         << scene.fractal.c.w << ", " << scene.fractal.c.x << ", " << scene.fractal.c.y << ", "
+         << scene.fractal.c.z << "], \"threads\": " << image.threads
+         << ", \"seconds\": " << image.seconds
+         << ", \"note\": " << (note.empty() ? "null" : jsonString(note)) << "}";
+    std::printf("%s\n", json.str().c_str());
+}
+
+}  // namespace
+
+void addPlaneCommand(CLI::App& app, PlaneCommandOptions& options) {
+    CLI::App* plane = app.add_subcommand(
+        "plane",
+        "Draw a 2D image: a Julia set, its boundary, the Mandelbrot set, basins of "
+        "attraction or a plane through a quaternion Julia set (plane.kind)");
+    addSceneOptions(*plane, options, "Output PNG (RGBA, opaque)");
+    plane->footer("Scene keys (scene file sections, or --set section.key=value):\n" +
+                  parameterHelp());
+}
+
+int runPlaneCommand(const PlaneCommandOptions& options) {
+    Scene scene = sceneFromOptions(options);
+    // Every check that can fail runs before the work, the output path included.
+    validatePlaneScene(scene);
+    const std::string note = connectednessNote(scene);
+    AtomicFile output(options.output);
+
+    PlaneImage image = runInterruptibly("drawing", options.json, [&](auto cancel, auto progress) {
+        PlaneRenderOptions planeOptions;
+        planeOptions.threads = options.threads;
+        planeOptions.cancel = cancel;
+        planeOptions.progress = progress;
+        return renderPlane(scene, planeOptions);
+    });
+    if (!image.completed) return reportInterrupted();
+    output.write(encodePng(image.image, scene.render.bitDepth));
+    output.commit();
+    printSummary(options, scene, image, note);
+    return 0;
+}
+
+}  // namespace quaternia

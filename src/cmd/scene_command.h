@@ -1,0 +1,66 @@
+// What the commands that read a scene share: the options [SCENE.toml] -o --width --height --set
+// --threads --json, building the scene from them, Ctrl-C handling, and JSON strings.
+#pragma once
+
+#include <atomic>
+#include <csignal>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "json.h"  // jsonString for the commands' summaries
+#include "progress_bar.h"
+#include "quaternia/scene.h"
+
+namespace quaternia {
+
+struct SceneCommandOptions {
+    std::string scenePath;  // empty: the embedded default scene
+    std::string output;
+    std::optional<int64_t> width, height;  // unset: from the scene
+    std::vector<std::string> overrides;    // section.key=value
+    int threads = 0;
+    bool json = false;
+};
+
+// Adds the shared options to `command`; `outputHelp` describes -o.
+void addSceneOptions(CLI::App& command, SceneCommandOptions& options,
+                     const std::string& outputHelp);
+
+// The scene file (or the default scene), then each --set, then --width and --height. Throws
+// UserError for a bad file, key or value, and for --threads outside [0, 1024].
+Scene sceneFromOptions(const SceneCommandOptions& options);
+
+// While alive, Ctrl-C sets flag() instead of ending the process (the work stops early and
+// nothing is written); the previous handler returns on destruction.
+class InterruptScope {
+  public:
+    InterruptScope();
+    ~InterruptScope();
+    InterruptScope(const InterruptScope&) = delete;
+    InterruptScope& operator=(const InterruptScope&) = delete;
+
+    const std::atomic<bool>* flag() const;
+
+  private:
+    void (*previous_)(int);
+};
+
+// Runs work(cancel, progress) with Ctrl-C caught (InterruptScope) and a progress bar labelled
+// `label` on a terminal (none with `quiet`), and returns what it returns.
+template <typename Work>
+auto runInterruptibly(const char* label, bool quiet, Work work) {
+    InterruptScope interrupt;
+    ProgressBar bar(label, !quiet && ProgressBar::stderrIsTerminal());
+    auto result = work(interrupt.flag(), [&](double fraction) { bar.update(fraction); });
+    bar.finish();
+    return result;
+}
+
+// Says on stderr that the work was interrupted and nothing written; returns exit code 130.
+int reportInterrupted();
+
+}  // namespace quaternia
