@@ -127,6 +127,7 @@ std::vector<Parameter> buildParameterTable() {
     using C = CameraSettings;
     using R = RenderSettings;
     using H = ShadingSettings;
+    using M = MeshSettings;
     return {
         // [fractal]
         textParameter("fractal", "formula", &S::fractal, &F::formula, "z^2 + c", 1, 1000,
@@ -242,6 +243,16 @@ std::vector<Parameter> buildParameterTable() {
                       "Display gamma of the encoded image (2.2 is close to sRGB)"),
         realParameter("shading", "exposure", &S::shading, &H::exposure, 1, 0, 100,
                       "Multiplies linear radiance before gamma encoding; 1 leaves it as is"),
+        // [mesh]
+        integerParameter("mesh", "resolution", &S::mesh, &M::resolution, 256, 1, 4096,
+                         "Grid cells of `quaternia mesh` along the longest side of the set's "
+                         "bounding box; time and memory grow with its square"),
+        realParameter("mesh", "iso", &S::mesh, &M::iso, 0, 0, 16,
+                      "Moves the mesh's surface outward by this many cells, thickening thin "
+                      "parts for 3D printing; 0 meshes the set itself"),
+        realParameter("mesh", "min_component", &S::mesh, &M::minComponent, 0, 0, 1e6,
+                      "Drops connected pieces of the mesh whose volume (world units cubed) is "
+                      "below this; 0 keeps every piece"),
     };
 }
 

@@ -45,7 +45,7 @@ struct Parameter {
     std::function<ParameterValue(const Scene&)> read;
 };
 
-// Every parameter, grouped by section in the order fractal, slice, camera, render, shading.
+// Every parameter, grouped by section in the order fractal, slice, camera, render, shading, mesh.
 // Builds the table (parameter_table.cpp); everything else reads it through parameterTable().
 std::vector<Parameter> buildParameterTable();
 

@@ -55,7 +55,7 @@ ParameterValue alternativeValue(const Parameter& p) {
 
 TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
     const auto& table = parameterTable();
-    EXPECT_EQ(table.size(), 39u);  // every field of Scene (scene.h)
+    EXPECT_EQ(table.size(), 42u);  // every field of Scene (scene.h)
     std::set<std::string> names;
     for (const auto& p : table) {
         EXPECT_TRUE(names.insert(p.name()).second) << p.name() << " is declared twice";
@@ -63,7 +63,7 @@ TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
         EXPECT_FALSE(p.help.empty()) << p.name();
     }
     EXPECT_EQ(parameterSections(),
-              (std::vector<std::string>{"fractal", "slice", "camera", "render", "shading"}));
+              (std::vector<std::string>{"fractal", "slice", "camera", "render", "shading", "mesh"}));
     EXPECT_EQ(table.front().name(), "fractal.formula");
     EXPECT_EQ(table.back().name(), "shading.exposure");
     EXPECT_EQ(findParameter("render"), nullptr);

@@ -74,12 +74,20 @@ struct ShadingSettings {
     double exposure = 0;
 };
 
+// `quaternia mesh` (mesher.h): marching tetrahedra of the set on a sparse grid.
+struct MeshSettings {
+    int resolution = 0;       // grid cells along the longest side of the set's bounding box
+    double iso = 0;           // surface offset outward, in cells (thickens thin parts for printing)
+    double minComponent = 0;  // connected components of smaller |volume| are dropped (world^3)
+};
+
 struct Scene {
     FractalSettings fractal;
     SliceSettings slice;
     CameraSettings camera;
     RenderSettings render;
     ShadingSettings shading;
+    MeshSettings mesh;
 };
 
 }  // namespace quaternia
