@@ -7,6 +7,7 @@
 
 #include "quaternia/parameters.h"
 #include "quaternia/util/error.h"
+#include "mesh_command.h"
 #include "render_command.h"
 
 int main(int argc, char** argv) {
@@ -18,11 +19,13 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "quaternia 0.1.0");
     app.footer(
-        "Run `quaternia render --help` for the render options.\n\nScene keys (scene file "
+        "Run `quaternia render --help` or `quaternia mesh --help` for their options.\n\nScene keys (scene file "
         "sections, or --set section.key=value):\n" +
         parameterHelp());
     RenderCommandOptions renderOptions;
     addRenderCommand(app, renderOptions);
+    MeshCommandOptions meshOptions;
+    addMeshCommand(app, meshOptions);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -37,6 +40,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (app.got_subcommand("render")) return runRenderCommand(renderOptions);
+        if (app.got_subcommand("mesh")) return runMeshCommand(meshOptions);
     } catch (const UserError& e) {
         std::fprintf(stderr, "quaternia: error: %s\n", e.what());
         return 2;

@@ -1,48 +1,22 @@
 #include "render_command.h"
 
-#include <csignal>
 #include <cstdio>
 #include <sstream>
 
+#include "command_support.h"
 #include "progress_bar.h"
 #include "quaternia/fractal.h"
 #include "quaternia/parameters.h"
 #include "quaternia/png_io.h"
 #include "quaternia/render.h"
-#include "quaternia/scene_file.h"
 #include "quaternia/util/atomic_file.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
 namespace {
 
-std::atomic<bool> gInterrupted{false};
-
-extern "C" void onInterrupt(int) {
-    gInterrupted = true;
-}
-
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (char ch : s) {
-        if (ch == '"' || ch == '\\') {
-            out += '\\';
-            out += ch;
-        } else if (static_cast<unsigned char>(ch) < 0x20) {
-            char buffer[8];
-            std::snprintf(buffer, sizeof buffer, "\\u%04x", ch);
-            out += buffer;
-        } else {
-            out += ch;
-        }
-    }
-    return out + "\"";
-}
-
 Scene sceneFromOptions(const RenderCommandOptions& options) {
-    Scene scene = options.scenePath.empty() ? defaultScene() : loadScene(options.scenePath);
-    for (const std::string& assignment : options.overrides)
-        applyOverride(scene, assignment);
+    Scene scene = loadSceneWithOverrides(options.scenePath, options.overrides);
     if (options.width) setParameter(scene, "render.width", *options.width);
     if (options.height) setParameter(scene, "render.height", *options.height);
     return scene;
@@ -100,10 +74,7 @@ void addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
 }
 
 int runRenderCommand(const RenderCommandOptions& options) {
-    if (options.threads < 0 || options.threads > 1024) {
-        throw UserError("--threads",
-                        "--threads must be in [0, 1024], got " + std::to_string(options.threads));
-    }
+    checkThreadCount(options.threads);
     Scene scene = sceneFromOptions(options);
     // Every check that can fail runs before the work: the scene, the formula, and whether the
     // outputs can be written (a temporary file beside each, renamed over it at the end).
@@ -113,17 +84,15 @@ int runRenderCommand(const RenderCommandOptions& options) {
     std::optional<AtomicFile> depthOutput;
     if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);
 
-    gInterrupted = false;
-    auto previousHandler = std::signal(SIGINT, onInterrupt);
+    InterruptFlag interrupt;
     ProgressBar bar("rendering", !options.json && ProgressBar::stderrIsTerminal());
     RenderOptions renderOptions;
     renderOptions.threads = options.threads;
-    renderOptions.cancel = &gInterrupted;
+    renderOptions.cancel = interrupt.flag();
     renderOptions.progress = [&](double fraction) { bar.update(fraction); };
     renderOptions.depth = depthOutput.has_value();
     RenderResult result = render(scene, renderOptions);
     bar.finish();
-    std::signal(SIGINT, previousHandler);
     if (!result.completed) {
         std::fprintf(stderr, "quaternia: interrupted, nothing written\n");
         return 130;
