@@ -80,13 +80,13 @@ class BlockContour {
     }
 
     // The vertex on the edge from corner bits `from` to `to` (to has more bits) of cell (i, j, k).
-    uint32_t edgeVertex(int i, int j, int k, int from, int to) {
+    uint16_t edgeVertex(int i, int j, int k, int from, int to) {
         IntVector a = cornerOffset(from), b = cornerOffset(to);
         int ai = i + a.x, aj = j + a.y, ak = k + a.z;
         int direction = (from ^ to) - 1;
         int32_t& slot = scratch_.vertexOfEdge[std::size_t(localCorner(ai, aj, ak)) * 7 +
                                               std::size_t(direction)];
-        if (slot >= 0) return uint32_t(slot);
+        if (slot >= 0) return uint16_t(slot);
         slot = int32_t(out_.positions.size());
         // Bisect from the lower corner always, so every block finds the same point.
         Point3d p = cornerPoint(ai, aj, ak);
@@ -100,7 +100,7 @@ class BlockContour {
         uint64_t corner = grid_.cornerKey(lower_[0] + ai, lower_[1] + aj, lower_[2] + ak);
         out_.edgeKeys.push_back(corner * 7 + uint64_t(direction));
         out_.positions.push_back(Vector3f((p + q) * 0.5));
-        return uint32_t(slot);
+        return uint16_t(slot);
     }
 
     void contourCell(int i, int j, int k) {
@@ -145,7 +145,7 @@ class BlockContour {
 
     struct EdgePoint {
         int u, v;  // corner bits of the edge's ends
-        uint32_t index;
+        uint16_t index;
     };
     float distanceSquared(const EdgePoint& a, const EdgePoint& b) const {
         Vector3f d = out_.positions[a.index] - out_.positions[b.index];

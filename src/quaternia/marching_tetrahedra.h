@@ -6,6 +6,7 @@
 // the edge make the same vertex and the mesher welds them into one.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -35,7 +36,8 @@ class MeshField {
 struct BlockMesh {
     std::vector<uint64_t> edgeKeys;  // of each vertex: the grid edge it lies on
     std::vector<Vector3f> positions;
-    std::vector<Triangle> triangles;
+    // Local indices fit 16 bits: a block has at most 7 (blockSize + 1)^3 edges.
+    std::vector<std::array<uint16_t, 3>> triangles;
     // Bit f (faces -x, +x, -y, +y, -z, +z) is set in openFaces when face f has corners of both
     // signs: the surface goes on into the neighbour across it, which must then be contoured
     // too; and in outsideFaces when face f has an outside corner.

@@ -100,24 +100,26 @@ MeshCheck checkMesh(const Mesh& mesh, int threads) {
     MeshCheck check;
     check.vertices = int64_t(mesh.positions.size());
     check.triangles = int64_t(mesh.triangles.size());
-    VertexTriangles vt = vertexTriangles(mesh);
-    ParallelOptions options;
-    options.threads = threads;
-    std::vector<EdgeCounts> perThread(std::size_t(resolveThreadCount(threads)));
-    parallelFor(check.vertices, options, [&](int64_t begin, int64_t end, int thread) {
-        VertexScratch scratch;
-        for (int64_t v = begin; v < end; ++v)
-            checkVertex(mesh, vt, uint32_t(v), scratch, perThread[std::size_t(thread)]);
-    });
     EdgeCounts counts;
-    for (const EdgeCounts& c : perThread)
-        counts += c;
+    {  // scoped: the table of triangles per vertex is as big as the triangles themselves
+        VertexTriangles vt = vertexTriangles(mesh);
+        ParallelOptions options;
+        options.threads = threads;
+        std::vector<EdgeCounts> perThread(std::size_t(resolveThreadCount(threads)));
+        parallelFor(check.vertices, options, [&](int64_t begin, int64_t end, int thread) {
+            VertexScratch scratch;
+            for (int64_t v = begin; v < end; ++v)
+                checkVertex(mesh, vt, uint32_t(v), scratch, perThread[std::size_t(thread)]);
+        });
+        for (const EdgeCounts& c : perThread)
+            counts += c;
+        for (std::size_t v = 0; v + 1 < vt.first.size(); ++v)
+            check.unusedVertices += vt.first[v] == vt.first[v + 1];
+    }
     check.boundaryEdges = counts.boundary;
     check.nonManifoldEdges = counts.nonManifold;
     check.misorientedEdges = counts.misoriented;
     check.nonManifoldVertices = counts.nonManifoldVertices;
-    for (std::size_t v = 0; v + 1 < vt.first.size(); ++v)
-        check.unusedVertices += vt.first[v] == vt.first[v + 1];
     for (const Triangle& t : mesh.triangles) {
         bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
         // Zero area as the float coordinates that files carry (and admesh reads) give it.

@@ -12,6 +12,13 @@ namespace {
 // octree on one worker.
 constexpr int kTopBlock = 8;
 
+// True when the estimate at a box's centre shows that no point within `radius` of it is in the
+// set. An infinite estimate says nothing: it comes from a critical point of the polynomial on
+// the orbit (z = 0 for z^2 + c, where z' vanishes), such as the centre of a symmetric box.
+bool ruledOut(const DistanceEstimate& e, double radius) {
+    return !e.inside && std::isfinite(e.distance) && e.distance > radius;
+}
+
 struct CubeSearch {
     const Fractal& fractal;
     Point3d origin;
@@ -28,7 +35,7 @@ struct CubeSearch {
         Point3d centre = origin + Vector3d(lower[0], lower[1], lower[2]) * side + extent * 0.5;
         DistanceEstimate e = fractal.estimate(centre);
         ++estimates;
-        if (!e.inside && e.distance > 0.5 * length(extent) + reach) return;
+        if (ruledOut(e, 0.5 * length(extent) + reach)) return;
         if (size == 1) {
             out.push_back(lower);
             return;
@@ -109,7 +116,7 @@ struct BoxSearch {
         Point3d centre = origin + Vector3d(lower[0] + h, lower[1] + h, lower[2] + h) * side;
         DistanceEstimate e = fractal.estimate(centre);
         ++estimates;
-        if (!e.inside && e.distance > 0.5 * std::sqrt(3.0) * side * size) return;
+        if (ruledOut(e, 0.5 * std::sqrt(3.0) * side * size)) return;
         if (size == 1) {
             if (!found) found = {{lower, lower}};
             for (int axis = 0; axis < 3; ++axis) {

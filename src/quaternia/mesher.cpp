@@ -107,37 +107,49 @@ bool contourBlocks(const MeshField& field, const MeshGrid& grid, const BlockLatt
 }
 
 // One vertex per grid edge: the blocks' vertices sorted by edge key, duplicates (from edges
-// on faces between blocks) merged, and the triangles renumbered.
+// on faces between blocks) merged, and the triangles renumbered. Block data is released as
+// soon as it has been used, and every array reserved at its final size, to keep the peak low.
 Mesh weld(std::vector<BlockMesh>& blocks) {
     std::vector<std::size_t> firstRecord(blocks.size() + 1, 0);
-    for (std::size_t b = 0; b < blocks.size(); ++b)
+    std::size_t triangleCount = 0;
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
         firstRecord[b + 1] = firstRecord[b] + blocks[b].positions.size();
+        triangleCount += blocks[b].triangles.size();
+    }
     std::vector<std::pair<uint64_t, uint32_t>> keyed;
     keyed.reserve(firstRecord.back());
-    for (std::size_t b = 0; b < blocks.size(); ++b)
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
         for (std::size_t v = 0; v < blocks[b].edgeKeys.size(); ++v)
             keyed.push_back({blocks[b].edgeKeys[v], uint32_t(firstRecord[b] + v)});
+        blocks[b].edgeKeys = {};
+    }
     std::sort(keyed.begin(), keyed.end());
 
-    std::vector<uint32_t> vertexOfRecord(keyed.size());
-    std::vector<std::pair<uint32_t, uint32_t>> sourceOfVertex;  // (block, local vertex)
     Mesh mesh;
+    std::size_t unique = 0;
+    for (std::size_t r = 0; r < keyed.size(); ++r)
+        unique += r == 0 || keyed[r].first != keyed[r - 1].first;
+    mesh.positions.reserve(unique);
+    std::vector<uint32_t> vertexOfRecord(keyed.size());
     for (std::size_t r = 0; r < keyed.size(); ++r) {
         if (r == 0 || keyed[r].first != keyed[r - 1].first) {
             std::size_t record = keyed[r].second;
-            auto block = std::size_t(std::upper_bound(firstRecord.begin(), firstRecord.end(),
-                                                      record) -
-                                     firstRecord.begin() - 1);
+            auto block = std::size_t(
+                std::upper_bound(firstRecord.begin(), firstRecord.end(), record) -
+                firstRecord.begin() - 1);
             mesh.positions.push_back(blocks[block].positions[record - firstRecord[block]]);
         }
         vertexOfRecord[keyed[r].second] = uint32_t(mesh.positions.size() - 1);
     }
     keyed = {};
+    for (BlockMesh& block : blocks)
+        block.positions = {};
+    mesh.triangles.reserve(triangleCount);
     for (std::size_t b = 0; b < blocks.size(); ++b) {
-        for (const Triangle& t : blocks[b].triangles)
-            mesh.triangles.push_back({vertexOfRecord[firstRecord[b] + t[0]],
-                                      vertexOfRecord[firstRecord[b] + t[1]],
-                                      vertexOfRecord[firstRecord[b] + t[2]]});
+        const std::size_t first = firstRecord[b];
+        for (const auto& t : blocks[b].triangles)
+            mesh.triangles.push_back({vertexOfRecord[first + t[0]], vertexOfRecord[first + t[1]],
+                                      vertexOfRecord[first + t[2]]});
         blocks[b] = {};
     }
     return mesh;
