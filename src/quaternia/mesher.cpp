@@ -226,7 +226,8 @@ MeshResult meshScene(const Scene& scene, const MeshOptions& options) {
         return finish();
     }
     result.mesh = weld(meshes);
-    if (!addNormalsAndColors(scene, fractal, result.mesh, options, stats)) {
+    if (options.normalsAndColors &&
+        !addNormalsAndColors(scene, fractal, result.mesh, options, stats)) {
         result.completed = false;
         return finish();
     }

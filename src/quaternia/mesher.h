@@ -21,6 +21,7 @@ struct MeshOptions {
     int threads = 0;                                // 0 = every core
     const std::atomic<bool>* cancel = nullptr;      // set to stop early; the result says so
     std::function<void(double fraction)> progress;  // serialised calls
+    bool normalsAndColors = true;  // false: positions and triangles only (for checks)
 };
 
 struct MeshStats {
