@@ -29,7 +29,8 @@ Scene loadSceneWithOverrides(const std::string& scenePath,
 
 void checkThreadCount(int threads) {
     if (threads < 0 || threads > 1024)
-        throw UserError("--threads", "--threads must be in [0, 1024], got " + std::to_string(threads));
+        throw UserError("--threads",
+                        "--threads must be in [0, 1024], got " + std::to_string(threads));
 }
 
 std::string jsonString(const std::string& s) {

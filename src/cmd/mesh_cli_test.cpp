@@ -32,9 +32,9 @@ TEST_F(Cli, MeshPrintsJsonSummary) {
     EXPECT_EQ(r.exitCode, 0) << r.err;
     ASSERT_FALSE(r.out.empty());
     EXPECT_EQ(r.out.front(), '{');
-    for (const char* key : {"\"resolution\": 24", "\"iso\": 0.5", "\"min_component\": 0.001",
-                            "\"watertight\": true", "\"components\": 1", "\"volume\"",
-                            "\"area\"", "\"triangles\"", "\"seconds\""})
+    for (const char* key :
+         {"\"resolution\": 24", "\"iso\": 0.5", "\"min_component\": 0.001", "\"watertight\": true",
+          "\"components\": 1", "\"volume\"", "\"area\"", "\"triangles\"", "\"seconds\""})
         EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
 }
 

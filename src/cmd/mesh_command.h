@@ -13,9 +13,9 @@ namespace quaternia {
 struct MeshCommandOptions {
     std::string scenePath;  // empty: the embedded default scene
     std::string output = "quaternia.stl";
-    std::optional<int64_t> resolution;          // unset: mesh.resolution of the scene
-    std::optional<double> iso, minComponent;    // unset: mesh.iso, mesh.min_component
-    std::vector<std::string> overrides;         // section.key=value
+    std::optional<int64_t> resolution;        // unset: mesh.resolution of the scene
+    std::optional<double> iso, minComponent;  // unset: mesh.iso, mesh.min_component
+    std::vector<std::string> overrides;       // section.key=value
     int threads = 0;
     bool json = false;
 };

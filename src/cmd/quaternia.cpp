@@ -5,9 +5,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "mesh_command.h"
 #include "quaternia/parameters.h"
 #include "quaternia/util/error.h"
-#include "mesh_command.h"
 #include "render_command.h"
 
 int main(int argc, char** argv) {
@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "quaternia 0.1.0");
     app.footer(
-        "Run `quaternia render --help` or `quaternia mesh --help` for their options.\n\nScene keys (scene file "
+        "Run `quaternia render --help` or `quaternia mesh --help` for their options.\n\nScene keys "
+        "(scene file "
         "sections, or --set section.key=value):\n" +
         parameterHelp());
     RenderCommandOptions renderOptions;

@@ -84,8 +84,9 @@ class BlockContour {
         IntVector a = cornerOffset(from), b = cornerOffset(to);
         int ai = i + a.x, aj = j + a.y, ak = k + a.z;
         int direction = (from ^ to) - 1;
-        int32_t& slot = scratch_.vertexOfEdge[std::size_t(localCorner(ai, aj, ak)) * 7 +
-                                              std::size_t(direction)];
+        int32_t& slot =
+            scratch_
+                .vertexOfEdge[std::size_t(localCorner(ai, aj, ak)) * 7 + std::size_t(direction)];
         if (slot >= 0) return uint16_t(slot);
         slot = int32_t(out_.positions.size());
         // Bisect from the lower corner always, so every block finds the same point.

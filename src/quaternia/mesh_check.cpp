@@ -41,7 +41,7 @@ struct EdgeCounts {
 
 // Scratch of one worker, reused from vertex to vertex.
 struct VertexScratch {
-    std::vector<std::pair<uint32_t, int>> edges;  // (other end w > v, +1 for v->w, -1 for w->v)
+    std::vector<std::pair<uint32_t, int>> edges;      // (other end w > v, +1 for v->w, -1 for w->v)
     std::vector<std::pair<uint32_t, uint32_t>> link;  // (next, previous) of v in each triangle
 };
 

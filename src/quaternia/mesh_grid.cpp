@@ -58,12 +58,9 @@ int blocksAlong(int cubes) {
 
 }  // namespace
 
-std::optional<std::vector<LatticeIndex>> reachableCubes(const Fractal& fractal,
-                                                        const Point3d& origin, double side,
-                                                        const LatticeIndex& counts, double reach,
-                                                        int threads,
-                                                        const std::atomic<bool>* cancel,
-                                                        int64_t& estimates) {
+std::optional<std::vector<LatticeIndex>> reachableCubes(
+    const Fractal& fractal, const Point3d& origin, double side, const LatticeIndex& counts,
+    double reach, int threads, const std::atomic<bool>* cancel, int64_t& estimates) {
     CubeSearch search{fractal, origin, side, counts, reach};
     LatticeIndex blocks{blocksAlong(counts[0]), blocksAlong(counts[1]), blocksAlong(counts[2])};
     int64_t blockCount = int64_t(blocks[0]) * blocks[1] * blocks[2];

@@ -42,12 +42,9 @@ struct Box {
 // half-diagonal plus reach, tested first on blocks of 2^k cubes. In lattice order of the
 // top-level blocks, then octree order; `estimates` counts the distance estimates. Returns
 // nullopt if cancelled.
-std::optional<std::vector<LatticeIndex>> reachableCubes(const Fractal& fractal,
-                                                        const Point3d& origin, double side,
-                                                        const LatticeIndex& counts, double reach,
-                                                        int threads,
-                                                        const std::atomic<bool>* cancel,
-                                                        int64_t& estimates);
+std::optional<std::vector<LatticeIndex>> reachableCubes(
+    const Fractal& fractal, const Point3d& origin, double side, const LatticeIndex& counts,
+    double reach, int threads, const std::atomic<bool>* cancel, int64_t& estimates);
 
 // A box that holds the set: the box of the reachable cubes of a lattice of `divisions` cubes
 // per side (a power of two) over the bounding ball. Empty (nullopt) when no cube is reachable.

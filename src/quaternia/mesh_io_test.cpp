@@ -80,9 +80,9 @@ TEST(MeshIo, BinaryPlyReadsBack) {
     ASSERT_NE(body, std::string::npos);
     std::string header = bytes.substr(0, body);
     body += 11;
-    for (const char* line : {"format binary_little_endian 1.0", "element vertex 4",
-                             "property float nx", "property uchar red", "element face 4",
-                             "property list uchar int vertex_indices"})
+    for (const char* line :
+         {"format binary_little_endian 1.0", "element vertex 4", "property float nx",
+          "property uchar red", "element face 4", "property list uchar int vertex_indices"})
         EXPECT_NE(header.find(line), std::string::npos) << line;
     ASSERT_EQ(bytes.size(), body + 4 * 27 + 4 * 13);
     for (std::size_t v = 0; v < 4; ++v) {

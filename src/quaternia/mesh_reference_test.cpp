@@ -58,9 +58,9 @@ TEST_P(MeshReference, ClosedManifoldAndAdmeshAgrees) {
     MeshResult result = referenceMesh(id, 64);
     MeshCheck check = checkMesh(result.mesh);
     EXPECT_TRUE(check.watertight())
-        << id << ": boundary " << check.boundaryEdges << ", non-manifold "
-        << check.nonManifoldEdges << ", misoriented " << check.misorientedEdges << ", pinched "
-        << check.nonManifoldVertices << ", degenerate " << check.degenerateTriangles;
+        << id << ": boundary " << check.boundaryEdges << ", non-manifold " << check.nonManifoldEdges
+        << ", misoriented " << check.misorientedEdges << ", pinched " << check.nonManifoldVertices
+        << ", degenerate " << check.degenerateTriangles;
     ASSERT_GT(check.triangles, 100);
 
     if (!fs::exists("/usr/bin/admesh") && std::system("command -v admesh >/dev/null") != 0)
@@ -78,9 +78,8 @@ TEST_P(MeshReference, ClosedManifoldAndAdmeshAgrees) {
     EXPECT_EQ(admeshValue(report, "Total disconnected facets"), 0) << report;
     EXPECT_EQ(admeshValue(report, "Number of facets"), double(check.triangles));
     EXPECT_EQ(admeshValue(report, "Number of parts"), double(check.components)) << report;
-    for (const char* fixed : {"Degenerate facets", "Edges fixed", "Facets removed",
-                              "Facets added", "Facets reversed", "Backwards edges",
-                              "Normals fixed"})
+    for (const char* fixed : {"Degenerate facets", "Edges fixed", "Facets removed", "Facets added",
+                              "Facets reversed", "Backwards edges", "Normals fixed"})
         EXPECT_EQ(admeshValue(report, fixed), 0) << fixed << "\n" << report;
     // admesh sums in single precision.
     EXPECT_NEAR(admeshValue(report, "Volume"), check.volume, 1e-3 * check.volume) << report;
@@ -96,8 +95,7 @@ TEST(MeshReferenceSilhouette, MatchesRayMarchedSilhouette) {
     options.normalsAndColors = false;
     MeshResult result = meshScene(scene, options);
     Mask rendered = maskFromAlpha(render(scene).image);
-    Mask drawn = meshSilhouette(result.mesh, scene.camera, scene.render.width,
-                                scene.render.height);
+    Mask drawn = meshSilhouette(result.mesh, scene.camera, scene.render.width, scene.render.height);
     MaskComparison comparison = compareMasks(drawn, rendered);
     EXPECT_GE(comparison.iou, 0.97) << describe(comparison);
     std::printf("mesh silhouette against ray marching: %s\n", describe(comparison).c_str());

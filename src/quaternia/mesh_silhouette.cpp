@@ -20,7 +20,9 @@ Mask meshSilhouette(const Mesh& mesh, const CameraSettings& settings, int width,
         if (!image[t[0]] || !image[t[1]] || !image[t[2]]) continue;  // behind the camera
         const auto &a = *image[t[0]], &b = *image[t[1]], &c = *image[t[2]];
         auto edge = [](const std::array<double, 2>& p, const std::array<double, 2>& q, double x,
-                       double y) { return (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0]); };
+                       double y) {
+            return (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0]);
+        };
         double area = edge(a, b, c[0], c[1]);
         if (area == 0) continue;
         // Pixel (px, py) has its centre at (px + 0.5, py + 0.5), as in Camera::generateRay.

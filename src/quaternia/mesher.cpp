@@ -22,8 +22,8 @@ constexpr double kContourShare = 0.9;
 struct BlockLattice {
     LatticeIndex counts;
     std::size_t index(const LatticeIndex& b) const {
-        return std::size_t(b[0]) + std::size_t(counts[0]) * (std::size_t(b[1]) +
-                                                             std::size_t(counts[1]) * b[2]);
+        return std::size_t(b[0]) +
+               std::size_t(counts[0]) * (std::size_t(b[1]) + std::size_t(counts[1]) * b[2]);
     }
     bool contains(const LatticeIndex& b) const {
         return b[0] >= 0 && b[1] >= 0 && b[2] >= 0 && b[0] < counts[0] && b[1] < counts[1] &&
@@ -80,9 +80,9 @@ bool contourBlocks(const MeshField& field, const MeshGrid& grid, const BlockLatt
         bool completed = parallelFor(
             int64_t(todo.size()), parallel, [&](int64_t begin, int64_t end, int thread) {
                 for (int64_t b = begin; b < end; ++b)
-                    wave[std::size_t(b)] = contourBlock(field, grid, todo[std::size_t(b)],
-                                                        kMeshBlockSize,
-                                                        scratch[std::size_t(thread)]);
+                    wave[std::size_t(b)] =
+                        contourBlock(field, grid, todo[std::size_t(b)], kMeshBlockSize,
+                                     scratch[std::size_t(thread)]);
             });
         if (!completed) return false;
         stats.blocks += int64_t(todo.size());
@@ -134,9 +134,9 @@ Mesh weld(std::vector<BlockMesh>& blocks) {
     for (std::size_t r = 0; r < keyed.size(); ++r) {
         if (r == 0 || keyed[r].first != keyed[r - 1].first) {
             std::size_t record = keyed[r].second;
-            auto block = std::size_t(
-                std::upper_bound(firstRecord.begin(), firstRecord.end(), record) -
-                firstRecord.begin() - 1);
+            auto block =
+                std::size_t(std::upper_bound(firstRecord.begin(), firstRecord.end(), record) -
+                            firstRecord.begin() - 1);
             mesh.positions.push_back(blocks[block].positions[record - firstRecord[block]]);
         }
         vertexOfRecord[keyed[r].second] = uint32_t(mesh.positions.size() - 1);
@@ -164,8 +164,8 @@ bool addNormalsAndColors(const Scene& scene, const Fractal& fractal, Mesh& mesh,
     ParallelOptions parallel;
     parallel.threads = options.threads;
     parallel.cancel = options.cancel;
-    bool completed = parallelFor(
-        int64_t(mesh.positions.size()), parallel, [&](int64_t begin, int64_t end, int) {
+    bool completed =
+        parallelFor(int64_t(mesh.positions.size()), parallel, [&](int64_t begin, int64_t end, int) {
             for (int64_t v = begin; v < end; ++v) {
                 Point3d p(mesh.positions[std::size_t(v)]);
                 mesh.normals[std::size_t(v)] = Vector3f(fractal.normal(p));
@@ -210,9 +210,9 @@ MeshResult meshScene(const Scene& scene, const MeshOptions& options) {
     stats.latticeBlocks = int64_t(lattice.counts[0]) * lattice.counts[1] * lattice.counts[2];
     // Blocks that may hold a point with DE <= offset; one cell of slack for the corners that
     // a block shares with its neighbours.
-    auto blocks = reachableCubes(fractal, grid.origin, kMeshBlockSize * grid.cellSize,
-                                 lattice.counts, offset + grid.cellSize, options.threads,
-                                 options.cancel, stats.estimates);
+    auto blocks =
+        reachableCubes(fractal, grid.origin, kMeshBlockSize * grid.cellSize, lattice.counts,
+                       offset + grid.cellSize, options.threads, options.cancel, stats.estimates);
     if (!blocks) {
         result.completed = false;
         return finish();

@@ -26,12 +26,12 @@ struct MeshOptions {
 
 struct MeshStats {
     MeshGrid grid;
-    int blockSize = 0;           // cells per block side
+    int blockSize = 0;          // cells per block side
     int64_t latticeBlocks = 0;  // blocks of the whole grid (what a dense method would visit)
     int64_t nearBlocks = 0;     // blocks the distance estimate could not rule out
     int64_t blocks = 0;         // blocks contoured
     int64_t closureBlocks = 0;  // of them, ruled out but crossed by the surface at a face
-    int64_t estimates = 0;       // distance estimates, all stages
+    int64_t estimates = 0;      // distance estimates, all stages
     int64_t droppedComponents = 0;
     int threads = 0;
     double seconds = 0;
