@@ -40,6 +40,11 @@ class BlockContour {
             for (int j = 0; j < cells_[1]; ++j)
                 for (int i = 0; i < cells_[0]; ++i)
                     contourCell(i, j, k);
+        // Blocks are kept until all are welded: capacity left over would be a third of the
+        // peak memory.
+        out_.edgeKeys.shrink_to_fit();
+        out_.positions.shrink_to_fit();
+        out_.triangles.shrink_to_fit();
         return std::move(out_);
     }
 

@@ -22,6 +22,9 @@ class MeshField {
   public:
     MeshField(const Fractal& fractal, double offset) : fractal_(fractal), offset_(offset) {}
     bool inside(const Point3d& p) const {
+        // Without an offset the sign is membership alone, cheaper than an estimate (no
+        // derivative, no logarithm).
+        if (offset_ <= 0) return fractal_.contains(p);
         DistanceEstimate e = fractal_.estimate(p);
         return e.inside || e.distance <= offset_;
     }
