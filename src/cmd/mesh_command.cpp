@@ -33,8 +33,11 @@ void printSummary(const MeshCommandOptions& options, const Scene& scene, MeshFor
             "%d thread%s\n",
             options.output.c_str(), meshFormatName(format), (long long)check.triangles,
             (long long)check.vertices, (long long)check.components,
-            check.components == 1 ? "" : "s", check.watertight() ? "closed" : "NOT closed", seconds,
-            check.volume, check.area, scene.mesh.resolution, stats.grid.cellSize,
+            check.components == 1 ? "" : "s",
+            check.triangles == 0 ? "empty"
+            : check.watertight() ? "closed"
+                                 : "NOT closed",
+            seconds, check.volume, check.area, scene.mesh.resolution, stats.grid.cellSize,
             (long long)stats.blocks, (long long)stats.latticeBlocks, stats.threads,
             stats.threads == 1 ? "" : "s");
         return;
