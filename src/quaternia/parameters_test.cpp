@@ -65,7 +65,7 @@ TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
     EXPECT_EQ(parameterSections(),
               (std::vector<std::string>{"fractal", "slice", "camera", "render", "shading", "mesh"}));
     EXPECT_EQ(table.front().name(), "fractal.formula");
-    EXPECT_EQ(table.back().name(), "shading.exposure");
+    EXPECT_EQ(table.back().name(), "mesh.min_component");
     EXPECT_EQ(findParameter("render"), nullptr);
     EXPECT_EQ(findParameter("render.widt"), nullptr);
     EXPECT_EQ(findParameter("render.width.x"), nullptr);
