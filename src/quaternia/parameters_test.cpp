@@ -62,8 +62,8 @@ TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
         EXPECT_EQ(findParameter(p.name()), &p);
         EXPECT_FALSE(p.help.empty()) << p.name();
     }
-    EXPECT_EQ(parameterSections(),
-              (std::vector<std::string>{"fractal", "slice", "camera", "render", "shading", "mesh"}));
+    EXPECT_EQ(parameterSections(), (std::vector<std::string>{"fractal", "slice", "camera", "render",
+                                                             "shading", "mesh"}));
     EXPECT_EQ(table.front().name(), "fractal.formula");
     EXPECT_EQ(table.back().name(), "mesh.min_component");
     EXPECT_EQ(findParameter("render"), nullptr);
