@@ -5,6 +5,7 @@
 #include <random>
 
 #include "quaternia/fractal.h"
+#include "quaternia/mesher.h"
 #include "quaternia/parameters.h"
 #include "quaternia/render.h"
 
@@ -56,6 +57,22 @@ BENCHMARK(BM_RenderDefaultScene)
     ->Args({640, 360, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// The default scene's mesh: the argument is mesh.resolution.
+void BM_MeshDefaultScene(benchmark::State& state) {
+    Scene scene = defaultScene();
+    scene.mesh.resolution = int(state.range(0));
+    MeshResult last;
+    for (auto _ : state)
+        last = meshScene(scene);
+    state.counters["triangles"] = double(last.mesh.triangles.size());
+    state.counters["blocks"] = double(last.stats.blocks);
+    state.counters["estimates/triangle"] =
+        double(last.stats.estimates) / double(last.mesh.triangles.size());
+    state.counters["triangles/s"] = benchmark::Counter(
+        double(last.mesh.triangles.size()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_MeshDefaultScene)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace quaternia

@@ -31,6 +31,25 @@ scene default-1080p --width 1920 --height 1080 --set render.samples=1
 scene default-preview-360p --width 640 --height 360 --set render.samples=1
 scene default-720p-4spp
 scene case01-shaded-1080p tests/data/reference/case01_sqr_A.toml --width 1920 --height 1080
+# Meshes of the default scene: median time and peak memory (GNU time's maximum resident set).
+mesh() {  # resolution
+  for _ in $(seq "$runs"); do
+    /usr/bin/time -f '%M' -o "$out/rss" "$binary" mesh --resolution "$1" --json -o "$out/mesh.stl" \
+      | python3 -c 'import json, sys; r = json.load(sys.stdin); print(r["seconds"], r["triangles"], r["threads"], open(sys.argv[1]).read().strip())' "$out/rss"
+  done | python3 -c '
+import statistics, sys
+runs = [line.split() for line in sys.stdin]
+seconds = statistics.median(float(r[0]) for r in runs)
+rss = max(int(r[3]) for r in runs) / 1024
+print("%-24s %9.2f s %10d triangles %8.0f MB peak  (median of %d, %s threads)"
+      % ("mesh-default-" + sys.argv[1], seconds, int(runs[0][1]), rss, len(runs), runs[0][2]))
+' "$1"
+}
+echo
+echo "mesh                     time      size                 memory"
+mesh 256
+mesh 512
+
 if [ -x build/quaternia_bench ]; then
   build/quaternia_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 fi

@@ -7,6 +7,7 @@ packages=(
   g++ cmake ninja-build pkg-config
   libpng-dev libtomlplusplus-dev libcli11-dev
   libgtest-dev libbenchmark-dev
+  admesh
 )
 
 missing=()

@@ -51,7 +51,7 @@ class CliFixture : public ::testing::Test {
         std::ofstream(dir_ / name) << text;
         return dir_ / name;
     }
-    std::string output() const { return (dir_ / "out.png").string(); }
+    std::string output(const std::string& name = "out.png") const { return (dir_ / name).string(); }
     // Nothing but the files the test made itself: no output, no temporary left behind.
     void expectNoOutput() const {
         for (const auto& entry : fs::directory_iterator(dir_)) {

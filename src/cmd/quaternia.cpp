@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cycles_command.h"
+#include "mesh_command.h"
 #include "orbit_command.h"
 #include "plane_command.h"
 #include "quaternia/parameters.h"
@@ -21,7 +22,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "quaternia 0.1.0");
     app.footer(
-        "Run `quaternia render --help` or `quaternia plane --help` for their options.\n\nScene "
+        "Run `quaternia COMMAND --help` for a command's options (render, plane, mesh, orbit, "
+        "cycles).\n\nScene "
         "keys (scene file "
         "sections, or --set section.key=value):\n" +
         parameterHelp());
@@ -33,6 +35,8 @@ int main(int argc, char** argv) {
     addCyclesCommand(app, cyclesOptions);
     PlaneCommandOptions planeOptions;
     addPlaneCommand(app, planeOptions);
+    MeshCommandOptions meshOptions;
+    addMeshCommand(app, meshOptions);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -50,6 +54,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("orbit")) return runOrbitCommand(orbitOptions);
         if (app.got_subcommand("cycles")) return runCyclesCommand(cyclesOptions);
         if (app.got_subcommand("plane")) return runPlaneCommand(planeOptions);
+        if (app.got_subcommand("mesh")) return runMeshCommand(meshOptions);
     } catch (const UserError& e) {
         std::fprintf(stderr, "quaternia: error: %s\n", e.what());
         return 2;

@@ -17,13 +17,15 @@ extern "C" void onInterrupt(int) {
 
 }  // namespace
 
-void addSceneOptions(CLI::App& command, SceneCommandOptions& options,
-                     const std::string& outputHelp) {
+void addSceneOptions(CLI::App& command, SceneCommandOptions& options, const std::string& outputHelp,
+                     bool imageSize) {
     command.add_option("scene", options.scenePath,
                        "Scene file (TOML); without one the embedded default scene is used");
     command.add_option("-o,--output", options.output, outputHelp)->capture_default_str();
-    command.add_option("--width", options.width, "Image width in pixels (render.width)");
-    command.add_option("--height", options.height, "Image height in pixels (render.height)");
+    if (imageSize) {
+        command.add_option("--width", options.width, "Image width in pixels (render.width)");
+        command.add_option("--height", options.height, "Image height in pixels (render.height)");
+    }
     command.add_option("--set", options.overrides,
                        "Override a scene key: section.key=value, value in TOML syntax "
                        "(a bare word is a string); repeatable");

@@ -26,9 +26,10 @@ struct SceneCommandOptions {
     bool json = false;
 };
 
-// Adds the shared options to `command`; `outputHelp` describes -o.
-void addSceneOptions(CLI::App& command, SceneCommandOptions& options,
-                     const std::string& outputHelp);
+// Adds the shared options to `command`; `outputHelp` describes -o. --width and --height only
+// where the command makes an image.
+void addSceneOptions(CLI::App& command, SceneCommandOptions& options, const std::string& outputHelp,
+                     bool imageSize = true);
 
 // The scene file (or the default scene), then each --set, then --width and --height. Throws
 // UserError for a bad file, key or value, and for --threads outside [0, 1024].

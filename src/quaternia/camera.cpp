@@ -25,4 +25,14 @@ Ray Camera::generateRay(double x, double y) const {
     return Ray{position_, normalize(direction_ + right_ * x0 + up_ * y0)};
 }
 
+std::optional<std::array<double, 2>> Camera::project(const Point3d& p) const {
+    // D, R and U are orthogonal: p - position = s (D + x0 R + y0 U) splits along them.
+    Vector3d v = p - position_;
+    double s = dot(v, direction_) / dot(direction_, direction_);
+    if (!(s > 0)) return std::nullopt;
+    double x0 = dot(v, right_) / (s * dot(right_, right_));
+    double y0 = dot(v, up_) / (s * dot(up_, up_));
+    return std::array<double, 2>{(x0 + 0.5) * width_, (0.5 - y0) * height_};
+}
+
 }  // namespace quaternia

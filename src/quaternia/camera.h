@@ -7,6 +7,9 @@
 //   y0 = 0.5 - (py + 0.5)/H, row 0 at the top.
 #pragma once
 
+#include <array>
+#include <optional>
+
 #include "scene.h"
 #include "vecmath.h"
 
@@ -19,6 +22,9 @@ class Camera {
     // The ray through the image point (x, y) in pixel units: (px + 0.5, py + 0.5) is the centre
     // of pixel (px, py); other values are used for sub-pixel samples.
     Ray generateRay(double x, double y) const;
+    // The inverse: the image point (x, y) whose ray passes through p, or nullopt when p is not
+    // in front of the camera. For drawing geometry (a mesh's silhouette) in the same picture.
+    std::optional<std::array<double, 2>> project(const Point3d& p) const;
 
     // Width of one pixel at distance t along a ray near the image centre: t * 2 tan(fov/2) / W.
     // Marching epsilons are fractions of it, so precision follows the image resolution.

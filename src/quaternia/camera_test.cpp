@@ -47,3 +47,21 @@ TEST(Camera, HorizontalFieldOfViewIsExact) {
 
 }  // namespace
 }  // namespace quaternia
+
+namespace quaternia {
+namespace {
+
+TEST(Camera, ProjectInvertsGenerateRay) {
+    Camera camera(referenceCamera(), 320, 240);
+    for (auto [x, y] : {std::pair{0.5, 0.5}, {160.0, 120.0}, {319.5, 10.25}, {37.0, 201.0}}) {
+        Ray ray = camera.generateRay(x, y);
+        auto projected = camera.project(ray.at(3.7));
+        ASSERT_TRUE(projected.has_value());
+        EXPECT_NEAR((*projected)[0], x, 1e-9);
+        EXPECT_NEAR((*projected)[1], y, 1e-9);
+    }
+    EXPECT_FALSE(camera.project(Point3d(1, 1.5, -4) - Point3d(0, 0, 1)).has_value());
+}
+
+}  // namespace
+}  // namespace quaternia

@@ -129,6 +129,7 @@ std::vector<Parameter> buildParameterTable() {
     using R = RenderSettings;
     using H = ShadingSettings;
     using P = PlaneSettings;
+    using M = MeshSettings;
     return {
         // [fractal]
         textParameter("fractal", "formula", &S::fractal, &F::formula, "z^2 + c", 1, 1000,
@@ -275,6 +276,16 @@ std::vector<Parameter> buildParameterTable() {
         realParameter("plane", "boundary_width", &S::plane, &P::boundaryWidth, 0.75, 0.01, 100,
                       "julia-boundary: J_c is drawn where the distance estimate is below this "
                       "many pixels"),
+        // [mesh]
+        integerParameter("mesh", "resolution", &S::mesh, &M::resolution, 256, 1, 4096,
+                         "Grid cells of `quaternia mesh` along the longest side of the set's "
+                         "bounding box; time and memory grow with its square"),
+        realParameter("mesh", "iso", &S::mesh, &M::iso, 0, 0, 16,
+                      "Moves the mesh's surface outward by this many cells, thickening thin "
+                      "parts for 3D printing; 0 meshes the set itself"),
+        realParameter("mesh", "min_component", &S::mesh, &M::minComponent, 0, 0, 1e6,
+                      "Drops connected pieces of the mesh whose volume (world units cubed) is "
+                      "below this; 0 keeps every piece"),
     };
 }
 

@@ -55,7 +55,8 @@ struct Parameter {
     std::function<ParameterValue(const Scene&)> read;
 };
 
-// Every parameter, grouped by section in the order fractal, slice, camera, render, shading, plane.
+// Every parameter, grouped by section in the order fractal, slice, camera, render, shading, plane,
+// mesh.
 // Builds the table (parameter_table.cpp); everything else reads it through parameterTable().
 std::vector<Parameter> buildParameterTable();
 

@@ -55,7 +55,7 @@ ParameterValue alternativeValue(const Parameter& p) {
 
 TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
     const auto& table = parameterTable();
-    EXPECT_EQ(table.size(), 48u);  // every field of Scene (scene.h)
+    EXPECT_EQ(table.size(), 51u);  // every field of Scene (scene.h)
     std::set<std::string> names;
     for (const auto& p : table) {
         EXPECT_TRUE(names.insert(p.name()).second) << p.name() << " is declared twice";
@@ -63,9 +63,9 @@ TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
         EXPECT_FALSE(p.help.empty()) << p.name();
     }
     EXPECT_EQ(parameterSections(), (std::vector<std::string>{"fractal", "slice", "camera", "render",
-                                                             "shading", "plane"}));
+                                                             "shading", "plane", "mesh"}));
     EXPECT_EQ(table.front().name(), "fractal.formula");
-    EXPECT_EQ(table.back().name(), "plane.boundary_width");
+    EXPECT_EQ(table.back().name(), "mesh.min_component");
     EXPECT_EQ(findParameter("render"), nullptr);
     EXPECT_EQ(findParameter("render.widt"), nullptr);
     EXPECT_EQ(findParameter("render.width.x"), nullptr);

@@ -90,6 +90,13 @@ struct PlaneSettings {
     double boundaryWidth = 0;        // julia-boundary: J_c is lit where DE < this many pixels
 };
 
+// `quaternia mesh` (mesher.h): marching tetrahedra of the set on a sparse grid.
+struct MeshSettings {
+    int resolution = 0;       // grid cells along the longest side of the set's bounding box
+    double iso = 0;           // surface offset outward, in cells (thickens thin parts for printing)
+    double minComponent = 0;  // connected components of smaller |volume| are dropped (world^3)
+};
+
 struct Scene {
     FractalSettings fractal;
     SliceSettings slice;
@@ -97,6 +104,7 @@ struct Scene {
     RenderSettings render;
     ShadingSettings shading;
     PlaneSettings plane;
+    MeshSettings mesh;
 };
 
 }  // namespace quaternia

@@ -1,0 +1,51 @@
+// `quaternia mesh` as a user meets it: each format written with a summary, JSON, and bad input
+// refused in one line with exit code 2 and no file left behind.
+#include "cli_fixture.h"
+
+namespace quaternia {
+namespace {
+
+using MeshCli = testing::CliFixture;
+using testing::CommandResult;
+using testing::readFile;
+namespace fs = std::filesystem;
+
+const std::string kSmall = " --resolution 24 --threads 2";
+
+TEST_F(MeshCli, MeshWritesEachFormatWithSummary) {
+    for (const char* name : {"out.stl", "out.ply", "out.obj"}) {
+        CommandResult r = run("mesh -o " + output(name) + kSmall);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_NE(r.out.find("closed"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("triangles"), std::string::npos) << r.out;
+        EXPECT_TRUE(r.err.empty()) << r.err;
+        ASSERT_TRUE(fs::exists(output(name))) << name;
+    }
+    EXPECT_EQ(readFile(output("out.ply")).substr(0, 4), "ply\n");
+    EXPECT_EQ(readFile(output("out.obj")).substr(0, 1), "#");
+}
+
+TEST_F(MeshCli, MeshPrintsJsonSummary) {
+    fs::path scene = write("ball.toml", "[fractal]\nc = [0, 0, 0, 0]\n[mesh]\niso = 0.5\n");
+    CommandResult r = run("mesh " + scene.string() + " --json -o " + output("b.stl") + kSmall +
+                          " --min-component 0.001");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    ASSERT_FALSE(r.out.empty());
+    EXPECT_EQ(r.out.front(), '{');
+    for (const char* key :
+         {"\"resolution\": 24", "\"iso\": 0.5", "\"min_component\": 0.001", "\"watertight\": true",
+          "\"components\": 1", "\"volume\"", "\"area\"", "\"triangles\"", "\"seconds\""})
+        EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
+}
+
+TEST_F(MeshCli, MeshRefusesBadInput) {
+    expectUserError(run("mesh -o " + output("m.stl") + " --resolution 0"), "mesh.resolution");
+    expectUserError(run("mesh -o " + output("m.stl") + " --resolution 5000"), "mesh.resolution");
+    expectUserError(run("mesh -o " + output("m.xyz") + kSmall), ".stl, .ply or .obj");
+    expectUserError(run("mesh -o " + (dir_ / "missing" / "m.stl").string() + kSmall),
+                    "cannot write");
+    expectUserError(run("mesh -o " + output("m.stl") + " --iso -1"), "mesh.iso");
+}
+
+}  // namespace
+}  // namespace quaternia

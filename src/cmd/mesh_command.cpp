@@ -1,0 +1,118 @@
+#include "mesh_command.h"
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+#include "quaternia/fractal.h"
+#include "quaternia/mesh_check.h"
+#include "quaternia/mesh_io.h"
+#include "quaternia/mesher.h"
+#include "quaternia/parameters.h"
+#include "quaternia/util/atomic_file.h"
+#include "scene_command.h"
+
+namespace quaternia {
+namespace {
+
+Scene meshSceneFromOptions(const MeshCommandOptions& options) {
+    Scene scene = sceneFromOptions(options);
+    if (options.resolution) setParameter(scene, "mesh.resolution", *options.resolution);
+    if (options.iso) setParameter(scene, "mesh.iso", *options.iso);
+    if (options.minComponent) setParameter(scene, "mesh.min_component", *options.minComponent);
+    return scene;
+}
+
+void printSummary(const MeshCommandOptions& options, const Scene& scene, MeshFormat format,
+                  const MeshStats& stats, const MeshCheck& check, double seconds) {
+    if (!options.json) {
+        std::printf(
+            "quaternia: wrote %s (%s, %lld triangles, %lld vertices, %lld component%s, %s) in "
+            "%.2f s; volume %.6g, area %.6g; resolution %d (cell %.4g), %lld of %lld blocks, "
+            "%d thread%s\n",
+            options.output.c_str(), meshFormatName(format), (long long)check.triangles,
+            (long long)check.vertices, (long long)check.components,
+            check.components == 1 ? "" : "s",
+            check.triangles == 0 ? "empty"
+            : check.watertight() ? "closed"
+                                 : "NOT closed",
+            seconds, check.volume, check.area, scene.mesh.resolution, stats.grid.cellSize,
+            (long long)stats.blocks, (long long)stats.latticeBlocks, stats.threads,
+            stats.threads == 1 ? "" : "s");
+        return;
+    }
+    std::ostringstream json;
+    json.precision(9);
+    json << "{\"command\": \"mesh\", \"output\": " << jsonString(options.output)
+         << ", \"format\": \"" << meshFormatName(format) << "\""
+         << ", \"formula\": " << jsonString(scene.fractal.formula) << ", \"c\": ["
+         << scene.fractal.c.w << ", " << scene.fractal.c.x << ", " << scene.fractal.c.y << ", "
+         << scene.fractal.c.z << "], \"resolution\": " << scene.mesh.resolution
+         << ", \"iso\": " << scene.mesh.iso << ", \"min_component\": " << scene.mesh.minComponent
+         << ", \"cell_size\": " << stats.grid.cellSize << ", \"grid\": [" << stats.grid.cells[0]
+         << ", " << stats.grid.cells[1] << ", " << stats.grid.cells[2]
+         << "], \"triangles\": " << check.triangles << ", \"vertices\": " << check.vertices
+         << ", \"components\": " << check.components
+         << ", \"dropped_components\": " << stats.droppedComponents
+         << ", \"volume\": " << check.volume << ", \"area\": " << check.area
+         << ", \"watertight\": " << (check.watertight() ? "true" : "false")
+         << ", \"boundary_edges\": " << check.boundaryEdges
+         << ", \"non_manifold_edges\": " << check.nonManifoldEdges
+         << ", \"misoriented_edges\": " << check.misorientedEdges
+         << ", \"non_manifold_vertices\": " << check.nonManifoldVertices
+         << ", \"degenerate_triangles\": " << check.degenerateTriangles
+         << ", \"lattice_blocks\": " << stats.latticeBlocks
+         << ", \"near_blocks\": " << stats.nearBlocks << ", \"blocks\": " << stats.blocks
+         << ", \"closure_blocks\": " << stats.closureBlocks
+         << ", \"estimates\": " << stats.estimates << ", \"threads\": " << stats.threads
+         << ", \"mesh_seconds\": " << stats.seconds << ", \"seconds\": " << seconds << "}";
+    std::printf("%s\n", json.str().c_str());
+}
+
+}  // namespace
+
+void addMeshCommand(CLI::App& app, MeshCommandOptions& options) {
+    CLI::App* mesh = app.add_subcommand(
+        "mesh", "Mesh a quaternion Julia set (closed, manifold) to STL, PLY or OBJ");
+    addSceneOptions(*mesh, options,
+                    "Output mesh; the extension picks the format: .stl (binary), .ply (binary, "
+                    "with normals and colours) or .obj",
+                    false);
+    mesh->add_option("--resolution", options.resolution,
+                     "Cells along the longest side of the set's bounding box (mesh.resolution)");
+    mesh->add_option("--iso", options.iso,
+                     "Move the surface outward by this many cells, for printing (mesh.iso)");
+    mesh->add_option("--min-component", options.minComponent,
+                     "Drop pieces of smaller volume, in world units cubed (mesh.min_component)");
+    mesh->footer("Scene keys (scene file sections, or --set section.key=value):\n" +
+                 parameterHelp());
+}
+
+int runMeshCommand(const MeshCommandOptions& options) {
+    auto start = std::chrono::steady_clock::now();
+    Scene scene = meshSceneFromOptions(options);
+    // Every check that can fail runs before the work: the scene, the formula, the format, and
+    // whether the output can be written (a temporary beside it, renamed over it at the end).
+    validateScene(scene);
+    Fractal::fromScene(scene);
+    MeshFormat format = meshFormatFromPath(options.output);
+    AtomicFile output(options.output);
+
+    MeshResult result = runInterruptibly("meshing", options.json, [&](auto cancel, auto progress) {
+        MeshOptions meshOptions;
+        meshOptions.threads = options.threads;
+        meshOptions.cancel = cancel;
+        meshOptions.progress = progress;
+        return meshScene(scene, meshOptions);
+    });
+    if (!result.completed) return reportInterrupted();
+    MeshCheck check = checkMesh(result.mesh, options.threads);
+    writeMesh(result.mesh, format, output);
+    output.commit();
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    printSummary(options, scene, format, result.stats, check, seconds);
+    return 0;
+}
+
+}  // namespace quaternia
