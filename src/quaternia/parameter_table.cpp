@@ -277,9 +277,10 @@ std::vector<Parameter> buildParameterTable() {
                       "julia-boundary: J_c is drawn where the distance estimate is below this "
                       "many pixels"),
         // [mesh]
-        integerParameter("mesh", "resolution", &S::mesh, &M::resolution, 256, 1, 4096,
-                         "Grid cells of `quaternia mesh` along the longest side of the set's "
-                         "bounding box; time and memory grow with its square"),
+        integerParameter(
+            "mesh", "resolution", &S::mesh, &M::resolution, 256, 1, 2048,
+            "Grid cells of `quaternia mesh` along the longest side of the set's "
+            "bounding box; time and memory grow with its square (1024: 1.5 GB, 2048: about 6 GB)"),
         realParameter("mesh", "iso", &S::mesh, &M::iso, 0, 0, 16,
                       "Moves the mesh's surface outward by this many cells, thickening thin "
                       "parts for 3D printing; 0 meshes the set itself"),

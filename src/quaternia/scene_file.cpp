@@ -23,10 +23,15 @@ namespace {
 // Integers, floats, booleans, strings and arrays of numbers (integers and floats mixed, read
 // as reals); nothing for tables, dates, times and other arrays.
 std::optional<ParameterValue> toParameterValue(const toml::node& node) {
-    if (const auto* integer = node.as_integer()) return ParameterValue(integer->get());
-    if (const auto* real = node.as_floating_point()) return ParameterValue(real->get());
-    if (const auto* boolean = node.as_boolean()) return ParameterValue(boolean->get());
-    if (const auto* text = node.as_string()) return ParameterValue(text->get());
+    // Built in place: moving a variant temporary into the optional trips GCC 12's
+    // -Wmaybe-uninitialized false positive in optimised sanitizer builds.
+    auto value = [](auto&& x) {
+        return std::optional<ParameterValue>(std::in_place, std::forward<decltype(x)>(x));
+    };
+    if (const auto* integer = node.as_integer()) return value(int64_t(integer->get()));
+    if (const auto* real = node.as_floating_point()) return value(double(real->get()));
+    if (const auto* boolean = node.as_boolean()) return value(bool(boolean->get()));
+    if (const auto* text = node.as_string()) return value(std::string(text->get()));
     if (const auto* array = node.as_array()) {
         std::vector<double> numbers;
         for (const auto& element : *array) {
@@ -37,7 +42,7 @@ std::optional<ParameterValue> toParameterValue(const toml::node& node) {
             else
                 return std::nullopt;
         }
-        return ParameterValue(std::move(numbers));
+        return value(std::move(numbers));
     }
     return std::nullopt;
 }
