@@ -98,12 +98,8 @@ int runMeshCommand(const MeshCommandOptions& options) {
     MeshFormat format = meshFormatFromPath(options.output);
     AtomicFile output(options.output);
 
-    MeshResult result = runInterruptibly("meshing", options.json, [&](auto cancel, auto progress) {
-        MeshOptions meshOptions;
-        meshOptions.threads = options.threads;
-        meshOptions.cancel = cancel;
-        meshOptions.progress = progress;
-        return meshScene(scene, meshOptions);
+    MeshResult result = runInterruptibly("meshing", options, [&](const WorkOptions& work) {
+        return meshScene(scene, MeshOptions{work});
     });
     if (!result.completed) return reportInterrupted();
     MeshCheck check = checkMesh(result.mesh, options.threads);

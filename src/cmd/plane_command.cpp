@@ -73,13 +73,8 @@ int runPlaneCommand(const PlaneCommandOptions& options) {
     const std::string note = connectednessNote(scene);
     AtomicFile output(options.output);
 
-    PlaneImage image = runInterruptibly("drawing", options.json, [&](auto cancel, auto progress) {
-        PlaneRenderOptions planeOptions;
-        planeOptions.threads = options.threads;
-        planeOptions.cancel = cancel;
-        planeOptions.progress = progress;
-        return renderPlane(scene, planeOptions);
-    });
+    PlaneImage image = runInterruptibly(
+        "drawing", options, [&](const WorkOptions& work) { return renderPlane(scene, work); });
     if (!image.completed) return reportInterrupted();
     output.write(encodePng(image.image, scene.render.bitDepth));
     output.commit();

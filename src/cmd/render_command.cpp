@@ -63,15 +63,11 @@ int runRenderCommand(const RenderCommandOptions& options) {
     std::optional<AtomicFile> depthOutput;
     if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);
 
-    RenderResult result =
-        runInterruptibly("rendering", options.json, [&](auto cancel, auto progress) {
-            RenderOptions renderOptions;
-            renderOptions.threads = options.threads;
-            renderOptions.cancel = cancel;
-            renderOptions.progress = progress;
-            renderOptions.depth = depthOutput.has_value();
-            return render(scene, renderOptions);
-        });
+    RenderResult result = runInterruptibly("rendering", options, [&](const WorkOptions& work) {
+        RenderOptions renderOptions{work};
+        renderOptions.depth = depthOutput.has_value();
+        return render(scene, renderOptions);
+    });
     if (!result.completed) return reportInterrupted();
 
     auto png = encodePng(result.image, scene.render.bitDepth);

@@ -14,6 +14,7 @@
 #include "json.h"  // jsonString for the commands' summaries
 #include "progress_bar.h"
 #include "quaternia/scene.h"
+#include "quaternia/util/parallel.h"
 
 namespace quaternia {
 
@@ -50,13 +51,18 @@ class InterruptScope {
     void (*previous_)(int);
 };
 
-// Runs work(cancel, progress) with Ctrl-C caught (InterruptScope) and a progress bar labelled
-// `label` on a terminal (none with `quiet`), and returns what it returns.
+// Runs work(WorkOptions) with the command's --threads, Ctrl-C caught (InterruptScope) as the
+// cancel flag and a progress bar labelled `label` on a terminal (none with --json), and returns
+// what it returns.
 template <typename Work>
-auto runInterruptibly(const char* label, bool quiet, Work work) {
+auto runInterruptibly(const char* label, const SceneCommandOptions& options, Work work) {
     InterruptScope interrupt;
-    ProgressBar bar(label, !quiet && ProgressBar::stderrIsTerminal());
-    auto result = work(interrupt.flag(), [&](double fraction) { bar.update(fraction); });
+    ProgressBar bar(label, !options.json && ProgressBar::stderrIsTerminal());
+    WorkOptions workOptions;
+    workOptions.threads = options.threads;
+    workOptions.cancel = interrupt.flag();
+    workOptions.progress = [&](double fraction) { bar.update(fraction); };
+    auto result = work(workOptions);
     bar.finish();
     return result;
 }

@@ -14,13 +14,11 @@
 #include "mesh.h"
 #include "mesh_grid.h"
 #include "scene.h"
+#include "util/parallel.h"
 
 namespace quaternia {
 
-struct MeshOptions {
-    int threads = 0;                                // 0 = every core
-    const std::atomic<bool>* cancel = nullptr;      // set to stop early; the result says so
-    std::function<void(double fraction)> progress;  // serialised calls
+struct MeshOptions : WorkOptions {
     bool normalsAndColors = true;  // false: positions and triangles only (for checks)
 };
 

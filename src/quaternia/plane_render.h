@@ -15,7 +15,7 @@
 
 namespace quaternia {
 
-using PlaneRenderOptions = ImageOptions;
+using PlaneRenderOptions = WorkOptions;
 
 struct PlaneImage {
     Image image;  // display values, alpha 1

@@ -47,7 +47,7 @@ std::array<double, 2> samplePosition(int k, int n, int px, int py) {
     return {(k % columns + jx) / columns, (k / columns + jy) / rows};
 }
 
-ParallelOptions imageParallelOptions(const ImageOptions& options) {
+ParallelOptions imageParallelOptions(const WorkOptions& options) {
     ParallelOptions parallel;
     parallel.threads = resolveThreadCount(options.threads);
     parallel.tileSize = 16;

@@ -14,13 +14,7 @@
 namespace quaternia {
 
 // How any image is computed (3D renders, plane images): threads, cancellation, progress.
-struct ImageOptions {
-    int threads = 0;                                // 0 = every core
-    const std::atomic<bool>* cancel = nullptr;      // set to stop early; the result says so
-    std::function<void(double fraction)> progress;  // serialised calls, fraction of tiles done
-};
-
-struct RenderOptions : ImageOptions {
+struct RenderOptions : WorkOptions {
     bool depth = false;  // also fill RenderResult::depth
 };
 
@@ -52,7 +46,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options = {});
 
 // The parallel-for settings of an image: 16-pixel tiles, the options' threads resolved, their
 // cancel flag, and their progress (if set) called with the fraction of tiles done.
-ParallelOptions imageParallelOptions(const ImageOptions& options);
+ParallelOptions imageParallelOptions(const WorkOptions& options);
 
 // Sample k of n within a pixel, in [0, 1)^2: a stratified grid jittered by a hash of the pixel,
 // so images are reproducible; the single sample is the pixel centre.

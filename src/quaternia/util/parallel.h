@@ -29,6 +29,14 @@ struct Tile {
     int x0, y0, x1, y1;
 };
 
+// What a caller hands any long job (a render, a plane image, a mesh): how many threads, a flag
+// that cancels it, and a progress callback taking the fraction done (serialised calls).
+struct WorkOptions {
+    int threads = 0;  // 0 = every core
+    const std::atomic<bool>* cancel = nullptr;
+    std::function<void(double fraction)> progress;
+};
+
 struct ParallelOptions {
     int threads = 0;    // 0 = std::thread::hardware_concurrency(); see resolveThreadCount
     int tileSize = 32;  // side of the square tiles of parallelForTiles; <= 0 means 32
