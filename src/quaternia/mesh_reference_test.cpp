@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
-#include <regex>
 
 #include "mask_compare.h"
 #include "mesh_check.h"
@@ -43,12 +43,19 @@ std::string admeshReport(const std::string& stlPath) {
     return pclose(pipe) == 0 ? report : "";
 }
 
-// The first number after `label` (and a colon) in admesh's report; -1 if absent.
+// The first number after `label` (and a colon) in admesh's report; -1 if absent. Plain string
+// scanning: std::regex trips GCC 12's -Wmaybe-uninitialized in optimised sanitizer builds.
 double admeshValue(const std::string& report, const std::string& label) {
-    std::smatch match;
-    if (!std::regex_search(report, match, std::regex(label + R"(\s*:\s*(-?[0-9.eE+-]+))")))
-        return -1;
-    return std::stod(match[1]);
+    for (std::size_t at = report.find(label); at != std::string::npos;
+         at = report.find(label, at + 1)) {
+        std::size_t colon = report.find_first_not_of(" \t", at + label.size());
+        if (colon == std::string::npos || report[colon] != ':') continue;
+        const char* start = report.c_str() + colon + 1;
+        char* end = nullptr;
+        double value = std::strtod(start, &end);
+        if (end != start) return value;
+    }
+    return -1;
 }
 
 class MeshReference : public ::testing::TestWithParam<const char*> {};
