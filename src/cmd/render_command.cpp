@@ -38,7 +38,9 @@ void printSummary(const RenderCommandOptions& options, const Scene& scene,
          << ", \"seconds\": " << stats.seconds << ", \"rays\": " << stats.rays
          << ", \"rays_per_second\": " << raysPerSecond << ", \"hits\": " << stats.hits
          << ", \"march_steps\": " << stats.marchSteps << ", \"iterations\": " << stats.iterations
-         << ", \"shading_estimates\": " << stats.shadingEstimates << "}";
+         << ", \"shading_estimates\": " << stats.shadingEstimates << ", \"lane_utilisation\": "
+         << (stats.laneSlots > 0 ? double(stats.laneIterations) / double(stats.laneSlots) : 0.0)
+         << ", \"engine\": " << jsonString(stats.engine) << "}";
     std::printf("%s\n", json.str().c_str());
 }
 

@@ -6,14 +6,16 @@
 #include "util/error.h"
 
 namespace quaternia {
+
+#include "julia_lanes-inl.h"  // the iteration formulas, shared with the SIMD kernels
+
 namespace {
 
-// The estimate is evaluated once |z| passes 1e4 (or the continuation budget runs out): its
-// relative error falls like 1 / ln|z| (Hart et al.). For high degrees the radius shrinks so
-// that one more step, |z|^(2d), stays below 1e300.
-constexpr int kMaxContinuation = 64;
-double estimateRadiusSquared(int degree) {
-    return std::min(1e8, std::pow(1e300, 1.0 / std::max(1, degree)));
+QuaternionLanes<double> lanes(const Quaternion& q) {
+    return {q.w, q.x, q.y, q.z};
+}
+Quaternion fromLanes(const QuaternionLanes<double>& q) {
+    return {q.w, q.x, q.y, q.z};
 }
 
 Quaternion power(const Quaternion& z, int degree) {
@@ -29,7 +31,9 @@ Quaternion power(const Quaternion& z, int degree) {
 struct QuadraticMap {  // s z^2 + c
     Quaternion c;
     double s;
-    Quaternion operator()(const Quaternion& z) const { return square(z) * s + c; }
+    Quaternion operator()(const Quaternion& z) const {
+        return fromLanes(quadraticStepLanes(lanes(z), s, lanes(c)));
+    }
     double gainSquared(double r2) const { return 4 * s * s * r2; }
 };
 struct PowerMap {  // s z^d + c
@@ -140,11 +144,12 @@ JuliaSet::JuliaSet(Polynomial polynomial, int maxIterations, double bailout)
                             std::to_string(bailout));
     }
     bailout_ = bailout == 0 ? escapeRadius_ : bailout;
-    estimateRadiusSquared_ = estimateRadiusSquared(degree_);
+    estimateRadiusSquared_ = continuationRadiusSquared<double>(degree_);
 }
 
 Quaternion JuliaSet::derivative(const Quaternion& z, const Quaternion& h) const {
-    if (power_ && power_->degree == 2) return (z * h + h * z) * power_->scale;
+    if (power_ && power_->degree == 2)
+        return fromLanes(quadraticDerivativeLanes(lanes(z), lanes(h), power_->scale));
     return polynomial_.derivative(z, h);
 }
 

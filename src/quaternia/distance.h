@@ -18,7 +18,9 @@
 //   on the bounding sphere.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 
 #include "polynomial.h"
@@ -34,6 +36,17 @@ struct DistanceEstimate {
     double trap = 0;          // min over the orbit of |z_n|: an orbit trap for colouring
     double smoothIteration = 0;  // continuous escape count, for colouring
 };
+
+// The estimate is evaluated once |z| passes 1e4 or after kMaxContinuation iterations past the
+// bailout, whichever comes first: its relative error falls like 1 / ln|z| (Hart et al.). For
+// high degrees the radius shrinks so that one more step, |z|^(2d), stays finite in T.
+inline constexpr int kMaxContinuation = 64;
+template <class T>
+double continuationRadiusSquared(int degree) {
+    const double largest = sizeof(T) == sizeof(float) ? 1e30 : 1e300;
+    return std::min(sizeof(T) == sizeof(float) ? 1e4 : 1e8,
+                    std::pow(largest, 1.0 / std::max(1, degree)));
+}
 
 // The continuous escape count n + 1 - log_d(ln|z_n|) of an orbit that has |z_n|^2 = radiusSquared
 // after n iterations, far outside the set: the renormalised iteration count (Vepstas 1997;

@@ -19,15 +19,16 @@ DistanceEstimate Fractal::estimate(const Point3d& p) const {
 
 Vector3d Fractal::normal(const Point3d& p) const {
     auto g = set_.potentialGradient(slice_.quaternionFromWorld(p), slice_.tangents());
-    Vector3d n(g[0], g[1], g[2]);
-    double len = length(n);
-    // A zero gradient (the orbit sits on a critical point) has no direction: face the origin's
-    // opposite, which is outward for star-shaped sets.
+    return normalOrOutward(Vector3d(g[0], g[1], g[2]), p);
+}
+
+Vector3d normalOrOutward(const Vector3d& g, const Point3d& p) {
+    double len = length(g);
     if (!(len > 0) || !std::isfinite(len)) {
         double lp = length(p);
         return lp > 0 ? p / lp : Vector3d(0, 1, 0);
     }
-    return n / len;
+    return g / len;
 }
 
 Vector3d Fractal::normalByDifferences(const Point3d& p, double h) const {

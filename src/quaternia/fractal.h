@@ -10,6 +10,10 @@
 
 namespace quaternia {
 
+// g / |g| for a gradient g; where g has no direction (zero or not finite: the orbit sits on a
+// critical point), the direction from the origin to p, outward for star-shaped sets.
+Vector3d normalOrOutward(const Vector3d& g, const Point3d& p);
+
 class Fractal {
   public:
     Fractal(JuliaSet set, Slice slice) : set_(std::move(set)), slice_(slice) {}

@@ -10,10 +10,10 @@ namespace {
 
 using Complex = std::complex<double>;
 
-// |z| at which an escaped orbit stops: large enough for the smooth count and the estimate to be
-// accurate (their errors fall like 1 / ln|z|), small enough that z^d cannot overflow.
+// |z| at which an escaped orbit stops, as the 3D estimate's continuation (distance.h): large
+// enough for the smooth count and the estimate to be accurate, small enough that z^d cannot
+// overflow.
 constexpr double kEstimateRadiusSquared = 1e8;
-constexpr int kMaxContinuation = 64;
 
 Complex power(Complex z, int degree) {
     Complex result = z;

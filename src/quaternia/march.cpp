@@ -21,11 +21,9 @@ MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSetti
     // Once the estimate is below epsilon the ray is within about two epsilons of K_N (the
     // estimate is at least half the true distance near the set). Rather than stop on that offset
     // surface, which fattens dust and thin filaments, confirm: keep stepping by the estimate but
-    // at least kConfirmStep footprints, testing membership, until a point is inside (the hit),
-    // the estimate grows past epsilon again (a near miss: march on), or kConfirmBudget steps
+    // at least kMarchConfirmStep footprints, testing membership, until a point is inside (the hit),
+    // the estimate grows past epsilon again (a near miss: march on), or kMarchConfirmBudget steps
     // pass (a grazing ray: take the offset surface after all).
-    constexpr double kConfirmStep = 0.05;
-    constexpr int kConfirmBudget = 48;
     MarchResult result;
     auto interval = intersectSphere(ray, fractal.boundingRadius());
     if (!interval) return result;
@@ -45,12 +43,12 @@ MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSetti
         double footprint = settings.pixelAngle * t;
         if (e.distance >= settings.epsilon * footprint) {
             confirming = 0;
-        } else if (++confirming > kConfirmBudget) {
+        } else if (++confirming > kMarchConfirmBudget) {
             result.hit = Hit{t, p, p, e};
             return result;
         }
         tOutside = t;
-        t += confirming ? std::max(e.distance, kConfirmStep * footprint) : e.distance;
+        t += confirming ? std::max(e.distance, kMarchConfirmStep * footprint) : e.distance;
     }
     return result;
 }

@@ -24,6 +24,11 @@ struct RayInterval {
 // Where the ray is inside the ball of the given radius about the origin, for t >= 0.
 std::optional<RayInterval> intersectSphere(const Ray& ray, double radius);
 
+// Sphere tracing's membership confirmation (sphereTrace): once the estimate is below epsilon,
+// steps of at least this many pixel footprints, for at most this many steps.
+inline constexpr double kMarchConfirmStep = 0.05;
+inline constexpr int kMarchConfirmBudget = 48;
+
 struct MarchSettings {
     MarchMethod method = MarchMethod::SphereTracing;
     double step = 0.002;       // fixed-step delta

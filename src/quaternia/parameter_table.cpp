@@ -194,6 +194,15 @@ std::vector<Parameter> buildParameterTable() {
                          "Most marching steps along one ray, for either marcher"),
         integerParameter("render", "bit_depth", &S::render, &R::bitDepth, 8, 8, 16,
                          "Bits per channel of the PNG image", {8, 16}),
+        choiceParameter("render", "engine", &S::render, &R::engine, "simd",
+                        {{"simd", RenderEngine::Simd}, {"scalar", RenderEngine::Scalar}},
+                        "simd marches many rays at once in SIMD lanes (z^d + c with sphere "
+                        "tracing; other formulas fall back); scalar is the double-precision "
+                        "reference marcher"),
+        choiceParameter("render", "precision", &S::render, &R::precision, "single",
+                        {{"single", Precision::Single}, {"double", Precision::Double}},
+                        "Floating-point precision of the simd engine: single is fastest, double "
+                        "(half as many lanes) holds deep zooms"),
         choiceParameter("render", "alpha", &S::render, &R::alpha, "coverage",
                         {{"coverage", AlphaMode::Coverage}, {"opaque", AlphaMode::Opaque}},
                         "PNG alpha: coverage (the fraction of samples that hit, background "

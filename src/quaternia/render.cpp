@@ -4,12 +4,16 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "camera.h"
 #include "fractal.h"
 #include "march.h"
+#include "packet_kernels.h"
 #include "parameters.h"
+#include "render_packets.h"
 #include "shade.h"
 #include "util/parallel.h"
 
@@ -30,9 +34,11 @@ double unitFromHash(uint32_t h) {
     return (h >> 8) * (1.0 / 16777216.0);
 }
 
-// Each thread's counters on their own cache lines, so that counting does not contend.
+// Each thread's counters and scratch on their own cache lines, so that threads do not contend.
 struct alignas(64) ThreadTotals {
     RenderStats stats;
+    std::unique_ptr<PacketTileRenderer> packets;  // the SIMD path's batches
+    std::vector<PixelSamples> pixels;
 };
 
 }  // namespace
@@ -80,10 +86,37 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     std::vector<ThreadTotals> totals(parallel.threads);
     const int samples = settings.samples;
 
+    // The SIMD path where the formula and marcher allow it (packet_kernels.h).
+    std::optional<LaneFractal> lanes;
+    if (settings.engine == RenderEngine::Simd && settings.method == MarchMethod::SphereTracing)
+        lanes = LaneFractal::from(fractal, settings.precision);
+    result.stats.engine = lanes ? laneTargetName() : "scalar";
+
+    // A pixel's samples to its colour, alpha and depth: the same for both paths.
+    auto finishPixel = [&](int px, int py, const PixelSamples& samplesOfPixel, RenderStats& stats) {
+        const int hits = samplesOfPixel.hits;
+        stats.rays += samples;
+        stats.hits += hits;
+        Color background = shader.background(camera.generateRay(px + 0.5, py + 0.5));
+        double coverage = double(hits) / samples;
+        Color color;
+        if (settings.alpha == AlphaMode::Opaque) {
+            color = samplesOfPixel.sum / double(samples) + background * (1 - coverage);
+            coverage = 1;
+        } else {
+            color = hits > 0 ? samplesOfPixel.sum / double(hits) : background;
+        }
+        Color display = shader.toDisplay(color);
+        result.image.at(px, py) =
+            Rgba{float(display.x), float(display.y), float(display.z), float(coverage)};
+        if (options.depth) {
+            double depth = hits > 0 ? (samplesOfPixel.depthSum / hits - depthNear) / depthRange : 1;
+            result.depth.at(px, py) = float(std::clamp(depth, 0.0, 1.0));
+        }
+    };
+
     auto renderPixel = [&](int px, int py, RenderStats& stats) {
-        Color sum;
-        double depthSum = 0;
-        int hits = 0;
+        PixelSamples pixel;
         ShadingStats shading;
         for (int k = 0; k < samples; ++k) {
             auto [sx, sy] = samplePosition(k, samples, px, py);
@@ -92,39 +125,47 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             stats.marchSteps += marched.steps;
             stats.iterations += marched.iterations;
             if (!marched.hit) continue;
-            ++hits;
-            sum += shader.shade(*marched.hit, ray, camera.pixelFootprint(marched.hit->t), shading);
-            depthSum += marched.hit->t;
+            ++pixel.hits;
+            pixel.sum +=
+                shader.shade(*marched.hit, ray, camera.pixelFootprint(marched.hit->t), shading);
+            pixel.depthSum += marched.hit->t;
         }
-        stats.rays += samples;
-        stats.hits += hits;
         stats.shadingEstimates += shading.estimates;
-        Color background = shader.background(camera.generateRay(px + 0.5, py + 0.5));
-        double coverage = double(hits) / samples;
-        Color color;
-        if (settings.alpha == AlphaMode::Opaque) {
-            color = sum / double(samples) + background * (1 - coverage);
-            coverage = 1;
-        } else {
-            color = hits > 0 ? sum / double(hits) : background;
+        finishPixel(px, py, pixel, stats);
+    };
+
+    auto renderTilePackets = [&](const Tile& tile, ThreadTotals& thread) {
+        if (!thread.packets) {
+            thread.packets = std::make_unique<PacketTileRenderer>(*lanes, camera, shader,
+                                                                  marchSettings, samples);
         }
-        Color display = shader.toDisplay(color);
-        result.image.at(px, py) =
-            Rgba{float(display.x), float(display.y), float(display.z), float(coverage)};
-        if (options.depth) {
-            result.depth.at(px, py) =
-                hits > 0 ? float(std::clamp((depthSum / hits - depthNear) / depthRange, 0.0, 1.0))
-                         : 1.0f;
+        PacketTileStats tileStats;
+        thread.packets->render(tile, thread.pixels, tileStats);
+        RenderStats& stats = thread.stats;
+        stats.marchSteps += tileStats.marchSteps;
+        stats.iterations += tileStats.camera.laneIterations;
+        stats.shadingEstimates += tileStats.shading.estimates;
+        stats.laneIterations += tileStats.camera.laneIterations + tileStats.shading.laneIterations;
+        stats.laneSlots += tileStats.camera.laneSlots + tileStats.shading.laneSlots;
+        const int width = tile.x1 - tile.x0;
+        for (int py = tile.y0; py < tile.y1; ++py) {
+            for (int px = tile.x0; px < tile.x1; ++px)
+                finishPixel(px, py, thread.pixels[size_t((py - tile.y0) * width + px - tile.x0)],
+                            stats);
         }
     };
 
     auto start = std::chrono::steady_clock::now();
     result.completed = parallelForTiles(settings.width, settings.height, parallel,
                                         [&](const Tile& tile, int threadIndex) {
-                                            RenderStats& stats = totals[threadIndex].stats;
+                                            ThreadTotals& thread = totals[threadIndex];
+                                            if (lanes) {
+                                                renderTilePackets(tile, thread);
+                                                return;
+                                            }
                                             for (int py = tile.y0; py < tile.y1; ++py) {
                                                 for (int px = tile.x0; px < tile.x1; ++px)
-                                                    renderPixel(px, py, stats);
+                                                    renderPixel(px, py, thread.stats);
                                             }
                                         });
     result.stats.seconds =
@@ -136,6 +177,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         result.stats.marchSteps += t.stats.marchSteps;
         result.stats.iterations += t.stats.iterations;
         result.stats.shadingEstimates += t.stats.shadingEstimates;
+        result.stats.laneIterations += t.stats.laneIterations;
+        result.stats.laneSlots += t.stats.laneSlots;
     }
     return result;
 }

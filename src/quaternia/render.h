@@ -24,6 +24,11 @@ struct RenderStats {
     int64_t marchSteps = 0;        // distance estimates or membership tests of camera rays
     int64_t iterations = 0;        // polynomial evaluations of camera rays
     int64_t shadingEstimates = 0;  // shadow and occlusion estimates
+    // The SIMD path's lanes (camera and shading): polynomial evaluations in live lanes and lane
+    // slots; utilisation = laneIterations / laneSlots. 0 on the scalar path.
+    int64_t laneIterations = 0;
+    int64_t laneSlots = 0;
+    const char* engine = "";  // the SIMD target (e.g. "AVX2") or "scalar"
     int threads = 0;
     double seconds = 0;
 };

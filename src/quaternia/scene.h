@@ -42,6 +42,11 @@ enum class MarchMethod { SphereTracing, FixedStep };
 // Opaque: the image is composited over the background gradient, alpha 1.
 enum class AlphaMode { Coverage, Opaque };
 
+// Simd: the packet kernels (packet_kernels.h) for s z^d + c with sphere tracing, in float or
+// double lanes; everything else, and Scalar, runs the scalar double reference (march.h).
+enum class RenderEngine { Simd, Scalar };
+enum class Precision { Single, Double };
+
 struct RenderSettings {
     int width = 0, height = 0;
     int samples = 0;  // per pixel, stratified
@@ -51,6 +56,8 @@ struct RenderSettings {
     int maxSteps = 0;    // per ray, for either marcher
     int bitDepth = 0;    // 8 or 16 bits per PNG channel
     AlphaMode alpha = AlphaMode::Coverage;
+    RenderEngine engine = RenderEngine::Simd;
+    Precision precision = Precision::Single;
 };
 
 enum class Shadows { None, Hard, Soft };

@@ -24,12 +24,20 @@ Shader::Shader(const ShadingSettings& settings, const Fractal& fractal)
       // Occlusion is probed over a few percent of the object's size: the scale of its folds.
       occlusionStep_(0.025 * fractal.boundingRadius()) {}
 
+double Shader::shadowMinimumStep() const {
+    return 1e-4 * fractal_.boundingRadius();
+}
+
+double Shader::visibilityFromMarch(double marched) const {
+    return settings_.shadows == Shadows::Soft ? smoothstep(0, 1, marched) : marched;
+}
+
 double Shader::shadow(const Point3d& p, ShadingStats& stats) const {
     if (settings_.shadows == Shadows::None) return 1;
     Ray ray{p, lightDirection_};
     auto interval = intersectSphere(ray, fractal_.boundingRadius());
     if (!interval) return 1;
-    const double minimumStep = 1e-4 * fractal_.boundingRadius();
+    const double minimumStep = shadowMinimumStep();
     const bool soft = settings_.shadows == Shadows::Soft;
     double visibility = 1;
     double t = 0;
@@ -43,24 +51,35 @@ double Shader::shadow(const Point3d& p, ShadingStats& stats) const {
             visibility = std::min(visibility, settings_.shadowSoftness * e.distance / t);
         t += std::max(e.distance, minimumStep);
     }
-    return soft ? smoothstep(0, 1, visibility) : 1;
+    return visibilityFromMarch(soft ? visibility : 1);
 }
 
 double Shader::ambientOcclusion(const Point3d& p, const Vector3d& normal,
                                 ShadingStats& stats) const {
+    double distances[kOcclusionSamples];
+    for (int k = 1; k <= kOcclusionSamples; ++k) {
+        DistanceEstimate e = fractal_.estimate(p + normal * occlusionHeight(k));
+        ++stats.estimates;
+        stats.iterations += e.iterations;
+        distances[k - 1] = e.distance;
+    }
+    return occlusionFromEstimates(distances);
+}
+
+double Shader::occlusionFromEstimates(const double* distances) const {
     // Compare the estimate at a few heights h above the surface with h itself. The estimate
     // runs at 0.5 to 1 times the true distance near the set, so a ratio of 0.5 counts as open.
     double open = 0, weights = 0, weight = 1;
-    for (int k = 1; k <= 5; ++k) {
-        double h = occlusionStep_ * k;
-        DistanceEstimate e = fractal_.estimate(p + normal * h);
-        ++stats.estimates;
-        stats.iterations += e.iterations;
-        open += weight * clamp01(2 * e.distance / h);
+    for (int k = 1; k <= kOcclusionSamples; ++k) {
+        open += weight * clamp01(2 * distances[k - 1] / occlusionHeight(k));
         weights += weight;
         weight *= 0.7;
     }
     return open / weights;
+}
+
+double Shader::ambientFromOpenness(double open) const {
+    return 1 - settings_.ambientOcclusion * (1 - open);
 }
 
 Color Shader::albedo(const DistanceEstimate& estimate) const {
@@ -80,27 +99,43 @@ Color Shader::albedo(const DistanceEstimate& estimate) const {
     }
 }
 
+double Shader::keyDiffuse(const Vector3d& normal) const {
+    return std::max(0.0, dot(normal, lightDirection_));
+}
+
+Point3d Shader::shadowOrigin(const Point3d& surface, const Vector3d& normal,
+                             double footprint) const {
+    return surface + normal * (2 * footprint + 1e-6 * fractal_.boundingRadius());
+}
+
 Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats) const {
-    Vector3d n = fractal_.normal(hit.outside);
-    if (dot(n, ray.direction) > 0) n = -n;  // seen from inside a thin sheet
-    Color base = albedo(hit.estimate);
-    // Leave the surface by a few footprints so the shadow ray does not hit its own surface.
-    Point3d lifted = hit.outside + n * (2 * footprint + 1e-6 * fractal_.boundingRadius());
-    double keyDiffuse = std::max(0.0, dot(n, lightDirection_));
-    double visibility = keyDiffuse > 0 ? shadow(lifted, stats) : 0;
-    double occlusion =
-        settings_.ambientOcclusion > 0
-            ? 1 - settings_.ambientOcclusion * (1 - ambientOcclusion(hit.outside, n, stats))
+    SurfaceSample sample;
+    sample.normal = fractal_.normal(hit.outside);
+    if (dot(sample.normal, ray.direction) > 0) sample.normal = -sample.normal;  // a thin sheet
+    sample.albedo = albedo(hit.estimate);
+    sample.visibility = keyDiffuse(sample.normal) > 0
+                            ? shadow(shadowOrigin(hit.outside, sample.normal, footprint), stats)
+                            : 0;
+    sample.occlusion =
+        occlusionEnabled()
+            ? ambientFromOpenness(ambientOcclusion(hit.outside, sample.normal, stats))
             : 1;
+    return light(sample, ray);
+}
+
+Color Shader::light(const SurfaceSample& sample, const Ray& ray) const {
+    const Vector3d& n = sample.normal;
+    const double key = keyDiffuse(n);
     Vector3d halfway = normalize(lightDirection_ - ray.direction);
     double highlight =
-        keyDiffuse > 0 ? std::pow(std::max(0.0, dot(n, halfway)), settings_.shininess) : 0;
+        key > 0 ? std::pow(float(std::max(0.0, dot(n, halfway))), float(settings_.shininess)) : 0;
     double fillDiffuse = std::max(0.0, dot(n, fillDirection_));
 
-    Color color = base * settings_.lightColor * (keyDiffuse * visibility);
-    color += settings_.lightColor * (settings_.specular * highlight * visibility);
-    color += base * settings_.fillColor * (fillDiffuse * occlusion);
-    color += base * (settings_.ambient * occlusion);
+    const Color& base = sample.albedo;
+    Color color = base * settings_.lightColor * (key * sample.visibility);
+    color += settings_.lightColor * (settings_.specular * highlight * sample.visibility);
+    color += base * settings_.fillColor * (fillDiffuse * sample.occlusion);
+    color += base * (settings_.ambient * sample.occlusion);
     return color;
 }
 
@@ -110,8 +145,10 @@ Color Shader::background(const Ray& ray) const {
 }
 
 Color Shader::toDisplay(const Color& linear) const {
+    // In float: the result goes to 8 or 16 bits, and powf is several times faster than pow.
+    const float inverseGamma = float(1.0 / settings_.gamma);
     auto encode = [&](double v) {
-        return std::pow(clamp01(v * settings_.exposure), 1.0 / settings_.gamma);
+        return double(std::pow(float(clamp01(v * settings_.exposure)), inverseGamma));
     };
     return {encode(linear.x), encode(linear.y), encode(linear.z)};
 }

@@ -16,6 +16,15 @@ struct ShadingStats {
     int64_t iterations = 0;  // their polynomial evaluations
 };
 
+// What lighting a hit needs beyond its position: the scalar path computes these ray by ray, the
+// SIMD path (render_packets.h) in batches; both light them with Shader::light.
+struct SurfaceSample {
+    Vector3d normal;  // unit, facing the viewer
+    Color albedo;
+    double visibility = 1;  // of the key light, after the penumbra's smoothstep
+    double occlusion = 1;   // ambient light reaching the point, ambient occlusion applied
+};
+
 class Shader {
   public:
     Shader(const ShadingSettings& settings, const Fractal& fractal);
@@ -30,6 +39,30 @@ class Shader {
     // 1 = open, 0 = fully occluded.
     double ambientOcclusion(const Point3d& p, const Vector3d& normal, ShadingStats& stats) const;
     Color albedo(const DistanceEstimate& estimate) const;
+
+    // The pieces both paths share. The key light's diffuse term (0 where it does not reach the
+    // front of the surface, and no shadow ray is needed).
+    double keyDiffuse(const Vector3d& normal) const;
+    // Where the shadow ray starts: a few footprints off the surface so that it does not hit the
+    // surface it leaves.
+    Point3d shadowOrigin(const Point3d& surface, const Vector3d& normal, double footprint) const;
+    // The marching settings of shadow rays (Shadows::None: no shadow rays at all).
+    Shadows shadows() const { return settings_.shadows; }
+    double shadowMinimumStep() const;
+    double shadowSoftness() const { return settings_.shadowSoftness; }
+    const Vector3d& lightDirection() const { return lightDirection_; }
+    // The visibility a shadow ray's march leaves (0 blocked; the running penumbra or 1) as light.
+    double visibilityFromMarch(double marched) const;
+    // Ambient occlusion: kOcclusionSamples estimates at occlusionHeight(1..n) along the normal.
+    static constexpr int kOcclusionSamples = 5;
+    bool occlusionEnabled() const { return settings_.ambientOcclusion > 0; }
+    double occlusionHeight(int k) const { return occlusionStep_ * k; }
+    // Openness (1 open, 0 occluded) from those estimates (distances[k - 1] at height k), and the
+    // ambient light it lets through at the configured strength.
+    double occlusionFromEstimates(const double* distances) const;
+    double ambientFromOpenness(double open) const;
+    // The lit colour of a surface sample seen along `ray`.
+    Color light(const SurfaceSample& sample, const Ray& ray) const;
     // Exposure, clamp to [0, 1] and gamma: the values written to an 8- or 16-bit image.
     Color toDisplay(const Color& linear) const;
 

@@ -1,0 +1,50 @@
+// The plain-C++ side of packet_kernels.h: flattening a Fractal for the lanes, and the batches.
+#include <cmath>
+
+#include "packet_kernels.h"
+
+namespace quaternia {
+
+std::optional<LaneFractal> LaneFractal::from(const Fractal& fractal, Precision precision) {
+    const JuliaSet& set = fractal.set();
+    std::optional<PowerForm> power = set.polynomial().powerForm();
+    // kMaxLaneDegree of julia_lanes-inl.h.
+    if (!power || power->degree < 1 || power->degree > 16) return std::nullopt;
+    LaneFractal lanes;
+    auto components = [](const Quaternion& q) { return std::array<double, 4>{q.w, q.x, q.y, q.z}; };
+    const Slice& slice = fractal.slice();
+    // The slice map is affine: its value at the origin plus the images of the unit vectors.
+    lanes.origin = components(slice.quaternionFromWorld(Point3d(0, 0, 0)));
+    for (int axis = 0; axis < 3; ++axis)
+        lanes.axes[axis] = components(slice.tangents()[axis]);
+    lanes.c = components(power->constant);
+    lanes.scale = power->scale;
+    lanes.degree = power->degree;
+    lanes.maxIterations = set.maxIterations();
+    lanes.bailoutSquared = set.bailout() * set.bailout();
+    lanes.escapeRadiusSquared = set.escapeRadius() * set.escapeRadius();
+    lanes.stepScale = slice.stepScale();
+    lanes.precision = precision;
+    return lanes;
+}
+
+void RayBatch::clear() {
+    for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tNear, &tFar})
+        v->clear();
+}
+
+void RayBatch::push(const Ray& ray, double near, double far) {
+    ox.push_back(ray.origin.x), oy.push_back(ray.origin.y), oz.push_back(ray.origin.z);
+    dx.push_back(ray.direction.x), dy.push_back(ray.direction.y), dz.push_back(ray.direction.z);
+    tNear.push_back(near), tFar.push_back(far);
+}
+
+void PointBatch::clear() {
+    x.clear(), y.clear(), z.clear();
+}
+
+void PointBatch::push(const Point3d& p) {
+    x.push_back(p.x), y.push_back(p.y), z.push_back(p.z);
+}
+
+}  // namespace quaternia

@@ -1,0 +1,549 @@
+// SIMD kernels of packet_kernels.h, compiled once per instruction set by Highway's
+// foreach_target and chosen at run time (HWY_DYNAMIC_DISPATCH). See the header for what each
+// computes; the scalar reference each one mirrors is named beside it.
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "quaternia/packet_kernels.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: the order matters, highway.h after foreach_target.h
+#include <hwy/contrib/math/math-inl.h>
+#include <hwy/highway.h>
+// clang-format on
+
+#include <algorithm>
+#include <cmath>
+
+#include "quaternia/lane_state.h"
+#include "quaternia/march.h"
+#include "quaternia/packet_kernels.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace quaternia {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+#include "quaternia/julia_lanes-inl.h"
+
+// The fractal's constants broadcast to lanes of type T.
+template <class D>
+struct LaneConstants {
+    using V = hn::Vec<D>;
+    QuaternionLanes<V> origin, axis0, axis1, axis2, c;
+    V scale, bailoutSquared, escapeRadiusSquared, estimateRadiusSquared, stepScale, maxIterations;
+    V gainFactor;  // 4 s^2 for d = 2, s^2 d^2 otherwise
+    int degree, maxIterationCount;
+
+    LaneConstants(D d, const LaneFractal& f)
+        : degree(f.degree), maxIterationCount(f.maxIterations) {
+        using T = hn::TFromD<D>;
+        auto lanes = [&](const std::array<double, 4>& q) {
+            return QuaternionLanes<V>{hn::Set(d, T(q[0])), hn::Set(d, T(q[1])), hn::Set(d, T(q[2])),
+                                      hn::Set(d, T(q[3]))};
+        };
+        origin = lanes(f.origin);
+        axis0 = lanes(f.axes[0]);
+        axis1 = lanes(f.axes[1]);
+        axis2 = lanes(f.axes[2]);
+        c = lanes(f.c);
+        scale = hn::Set(d, T(f.scale));
+        bailoutSquared = hn::Set(d, T(f.bailoutSquared));
+        escapeRadiusSquared = hn::Set(d, T(f.escapeRadiusSquared));
+        estimateRadiusSquared = hn::Set(d, T(continuationRadiusSquared<T>(f.degree)));
+        stepScale = hn::Set(d, T(f.stepScale));
+        maxIterations = hn::Set(d, T(f.maxIterations));
+        gainFactor = hn::Set(d, T(f.scale * f.scale * f.degree * f.degree));
+    }
+
+    // The slice: a 3D point to its quaternion.
+    QuaternionLanes<V> quaternionFromWorld(V x, V y, V z) const {
+        return {hn::MulAdd(z, axis2.w, hn::MulAdd(y, axis1.w, hn::MulAdd(x, axis0.w, origin.w))),
+                hn::MulAdd(z, axis2.x, hn::MulAdd(y, axis1.x, hn::MulAdd(x, axis0.x, origin.x))),
+                hn::MulAdd(z, axis2.y, hn::MulAdd(y, axis1.y, hn::MulAdd(x, axis0.y, origin.y))),
+                hn::MulAdd(z, axis2.z, hn::MulAdd(y, axis1.z, hn::MulAdd(x, axis0.z, origin.z)))};
+    }
+};
+
+template <class D>
+struct LaneEstimate {
+    hn::Vec<D> distance, trapSquared, iterations, radiusSquared;
+    hn::Mask<D> inside;
+};
+
+template <class V, class M>
+HWY_INLINE QuaternionLanes<V> select(M mask, const QuaternionLanes<V>& yes,
+                                     const QuaternionLanes<V>& no) {
+    return {hn::IfThenElse(mask, yes.w, no.w), hn::IfThenElse(mask, yes.x, no.x),
+            hn::IfThenElse(mask, yes.y, no.y), hn::IfThenElse(mask, yes.z, no.z)};
+}
+
+// JuliaSet::estimate (distance.cpp) in lanes: iterate while |z| <= bailout and fewer than N
+// iterates were tested, then, where escape is certain, continue to the estimate radius. Every
+// lane runs the same iterations (no per-lane selects on z, which would lengthen the dependency
+// chain); a lane whose estimate is final is marked done and its |z|^2 and |z'|^2 are kept at
+// that iteration, while its z runs on unused (it may overflow; nothing reads it). The loop ends
+// when every lane is done. kOrbit also keeps the orbit trap and the iteration count.
+template <bool kQuadratic, bool kOrbit, size_t K, class D>
+HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn::Vec<D>> (&z)[K],
+                              const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
+                              LaneCounters& counters) {
+    using V = hn::Vec<D>;
+    using M = hn::Mask<D>;
+    using T = hn::TFromD<D>;
+    const V one = hn::Set(d, T(1));
+    // K independent groups of lanes, iterated side by side so that their dependency chains
+    // overlap in the pipeline.
+    V r2[K], derivativeSquared[K], stopRadiusSquared[K], stopDerivativeSquared[K], trap[K],
+        stopIteration[K];
+    M escaped[K], done[K], inside[K];
+    bool allDone = true;
+    for (size_t j = 0; j < K; ++j) {
+        r2[j] = normSquaredLanes(z[j]);
+        derivativeSquared[j] = one;
+        escaped[j] = hn::And(live[j], r2[j] > k.bailoutSquared);
+        // Escaped at z_0: final unless escape is certain and the estimate radius not reached.
+        auto continues = hn::And(r2[j] > k.escapeRadiusSquared, r2[j] < k.estimateRadiusSquared);
+        done[j] = hn::Or(hn::Not(live[j]), hn::AndNot(continues, escaped[j]));
+        inside[j] = hn::FirstN(d, 0);
+        if (k.maxIterationCount <= 1) {
+            inside[j] = hn::AndNot(escaped[j], live[j]);
+            done[j] = hn::Or(done[j], inside[j]);
+        }
+        stopRadiusSquared[j] = r2[j];
+        stopDerivativeSquared[j] = one;
+        trap[j] = r2[j];
+        stopIteration[j] = hn::Zero(d);
+        allDone = allDone && hn::AllTrue(d, done[j]);
+    }
+    const int64_t lanes = int64_t(hn::Lanes(d));
+    const int iterationCap = k.maxIterationCount + kMaxContinuation;
+    for (int n = 1; n < iterationCap && !allDone; ++n) {
+        allDone = true;
+        for (size_t j = 0; j < K; ++j) {
+            counters.laneIterations += lanes - int64_t(hn::CountTrue(d, done[j]));
+            counters.laneSlots += lanes;
+            if constexpr (kQuadratic) {
+                derivativeSquared[j] = derivativeSquared[j] * (k.gainFactor * r2[j]);
+                z[j] = quadraticStepLanes(z[j], k.scale, k.c);
+            } else {
+                V gain = k.gainFactor;
+                for (int e = 1; e < k.degree; ++e)
+                    gain = gain * r2[j];
+                derivativeSquared[j] = derivativeSquared[j] * gain;
+                z[j] = powerStepLanes(z[j], k.degree, k.scale, k.c);
+            }
+            r2[j] = normSquaredLanes(z[j]);
+            const auto settled = hn::Or(escaped[j], done[j]);  // before this iterate
+            if constexpr (kOrbit)
+                trap[j] = hn::IfThenElse(settled, trap[j], hn::Min(trap[j], r2[j]));
+            const auto escapedNow = hn::AndNot(settled, r2[j] > k.bailoutSquared);
+            escaped[j] = hn::Or(escaped[j], escapedNow);
+            // An escaped lane stops at the estimate radius, or at once if escape is not certain.
+            auto stopNow = hn::AndNot(
+                done[j],
+                hn::And(escaped[j], hn::Or(r2[j] >= k.estimateRadiusSquared,
+                                           hn::AndNot(r2[j] > k.escapeRadiusSquared, escapedNow))));
+            if (n + 1 >= k.maxIterationCount) {  // z_0 .. z_{N-1} tested: the rest are inside
+                const auto insideNow = hn::Not(hn::Or(escaped[j], done[j]));
+                inside[j] = hn::Or(inside[j], insideNow);
+                stopNow = hn::Or(stopNow, insideNow);
+            }
+            stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
+            stopDerivativeSquared[j] =
+                hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
+            if constexpr (kOrbit) {
+                stopIteration[j] = hn::IfThenElse(stopNow, hn::Set(d, T(n)), stopIteration[j]);
+            }
+            done[j] = hn::Or(done[j], stopNow);
+            allDone = allDone && hn::AllTrue(d, done[j]);
+        }
+    }
+    for (size_t j = 0; j < K; ++j) {
+        const auto unfinished = hn::Not(done[j]);  // the continuation cap ended them
+        V radiusSquared = hn::IfThenElse(unfinished, r2[j], stopRadiusSquared[j]);
+        V derivative = hn::IfThenElse(unfinished, derivativeSquared[j], stopDerivativeSquared[j]);
+        if constexpr (kOrbit) {
+            stopIteration[j] =
+                hn::IfThenElse(unfinished, hn::Set(d, T(iterationCap - 1)), stopIteration[j]);
+        }
+        // d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2) ln |z|^2; an overflowed |z'|^2
+        // gives 0, which is right: the distance is then far below any step.
+        V distance =
+            hn::Set(d, T(0.25)) * hn::Sqrt(radiusSquared / derivative) * hn::Log(d, radiusSquared);
+        distance = hn::Max(hn::Zero(d), distance) * k.stepScale;
+        result[j].inside = inside[j];
+        result[j].distance = hn::IfThenZeroElse(inside[j], distance);
+        result[j].trapSquared = trap[j];
+        result[j].iterations = hn::IfThenElse(inside[j], k.maxIterations, stopIteration[j]);
+        result[j].radiusSquared = radiusSquared;
+    }
+}
+
+// sphereTrace (march.cpp) for a batch of camera rays, kLaneGroups vectors of rays at a time.
+template <bool kQuadratic, class D>
+void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
+                      const RayBatch& rays, std::vector<TraceResult>& results,
+                      LaneCounters& counters) {
+    using V = hn::Vec<D>;
+    using M = hn::Mask<D>;
+    using T = hn::TFromD<D>;
+    constexpr size_t K = kLaneGroups;
+    constexpr T kConfirmStep = T(kMarchConfirmStep);
+    static_assert(HWY_MAX_BYTES <= kMaxLaneBytes);
+    const LaneConstants<D> k(d, fractal);
+    const size_t lanes = hn::Lanes(d);
+    results.assign(rays.size(), TraceResult{});
+    RayLanes<T> s;
+    LaneScratch<T> finished;
+    size_t next = 0;
+    for (size_t lane = 0; lane < K * lanes; ++lane)
+        s.load(lane, rays, next);
+
+    const V zero = hn::Zero(d), one = hn::Set(d, T(1));
+    const V epsilon = hn::Set(d, T(march.epsilon)), pixelAngle = hn::Set(d, T(march.pixelAngle));
+    const V confirmBudget = hn::Set(d, T(kMarchConfirmBudget));
+    const V maxSteps = hn::Set(d, T(march.maxSteps));
+    for (;;) {
+        M live[K];
+        V t[K];
+        QuaternionLanes<V> q[K];
+        bool anyLive = false;
+        for (size_t j = 0; j < K; ++j) {
+            const size_t o = j * lanes;
+            live[j] = hn::Load(d, s.live + o) > zero;
+            anyLive = anyLive || !hn::AllFalse(d, live[j]);
+            t[j] = hn::Load(d, s.t + o);
+            q[j] = k.quaternionFromWorld(
+                hn::MulAdd(hn::Load(d, s.dx + o), t[j], hn::Load(d, s.ox + o)),
+                hn::MulAdd(hn::Load(d, s.dy + o), t[j], hn::Load(d, s.oy + o)),
+                hn::MulAdd(hn::Load(d, s.dz + o), t[j], hn::Load(d, s.oz + o)));
+        }
+        if (!anyLive) break;
+        LaneEstimate<D> e[K];
+        estimateLanes<kQuadratic, false>(d, k, q, live, e, counters);
+
+        bool anyDone = false;
+        for (size_t j = 0; j < K; ++j) {
+            const size_t o = j * lanes;
+            counters.estimates += int64_t(hn::CountTrue(d, live[j]));
+            const V footprint = pixelAngle * t[j];
+            V confirming = hn::IfThenElseZero(e[j].distance < epsilon * footprint,
+                                              hn::Load(d, s.confirming + o) + one);
+            const V steps = hn::Load(d, s.steps + o) + one;
+            auto insideHit = hn::And(live[j], e[j].inside);
+            auto grazing = hn::AndNot(e[j].inside, hn::And(live[j], confirming > confirmBudget));
+            V step = hn::IfThenElse(confirming > zero,
+                                    hn::Max(e[j].distance, hn::Set(d, kConfirmStep) * footprint),
+                                    e[j].distance);
+            const V tNext = t[j] + step;
+            auto ended = hn::Or(insideHit, grazing);
+            auto missed = hn::AndNot(ended, hn::And(live[j], hn::Or(tNext > hn::Load(d, s.tFar + o),
+                                                                    steps >= maxSteps)));
+            hn::Store(t[j], d, finished.a + o);
+            hn::Store(hn::Load(d, s.tOutside + o), d, finished.b + o);
+            hn::Store(steps, d, finished.c + o);
+            hn::Store(hn::IfThenElseZero(insideHit, one) +
+                          hn::IfThenElseZero(grazing, hn::Set(d, T(2))) +
+                          hn::IfThenElseZero(missed, hn::Set(d, T(3))),
+                      d, finished.kind + o);
+            anyDone = anyDone || !hn::AllFalse(d, hn::Or(ended, missed));
+            hn::Store(tNext, d, s.t + o);
+            hn::Store(t[j], d, s.tOutside + o);
+            hn::Store(confirming, d, s.confirming + o);
+            hn::Store(steps, d, s.steps + o);
+        }
+        if (!anyDone) continue;
+        for (size_t lane = 0; lane < K * lanes; ++lane) {
+            if (finished.kind[lane] == T(0)) continue;
+            TraceResult& r = results[size_t(s.ray[lane])];
+            r.steps = int(finished.c[lane]);
+            r.t = finished.a[lane];
+            if (finished.kind[lane] == T(1)) {
+                r.end = TraceEnd::Inside;
+                r.tOutside = finished.b[lane];
+            } else if (finished.kind[lane] == T(2)) {
+                r.end = TraceEnd::Grazing;
+                r.tOutside = r.t;
+            }
+            s.load(lane, rays, next);
+        }
+    }
+}
+
+// Shader::shadow (shade.cpp) for a batch of shadow rays, marched from t = 0.
+template <bool kQuadratic, class D>
+void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
+                      const RayBatch& rays, std::vector<double>& visibility,
+                      LaneCounters& counters) {
+    using V = hn::Vec<D>;
+    using M = hn::Mask<D>;
+    using T = hn::TFromD<D>;
+    constexpr size_t K = kLaneGroups;
+    const LaneConstants<D> k(d, fractal);
+    const size_t lanes = hn::Lanes(d);
+    visibility.assign(rays.size(), 1.0);
+    RayLanes<T> s;
+    LaneScratch<T> finished;
+    size_t next = 0;
+    for (size_t lane = 0; lane < K * lanes; ++lane)
+        s.load(lane, rays, next, /*startAtZero=*/true);
+
+    const V zero = hn::Zero(d), one = hn::Set(d, T(1));
+    const V minimumStep = hn::Set(d, T(march.minimumStep));
+    const V blockDistance = hn::Set(d, T(0.5 * march.minimumStep));
+    const V softness = hn::Set(d, T(march.softness));
+    const V maxSteps = hn::Set(d, T(march.maxSteps));
+    for (;;) {
+        M live[K];
+        V t[K];
+        QuaternionLanes<V> q[K];
+        bool anyLive = false;
+        for (size_t j = 0; j < K; ++j) {
+            const size_t o = j * lanes;
+            live[j] = hn::Load(d, s.live + o) > zero;
+            anyLive = anyLive || !hn::AllFalse(d, live[j]);
+            t[j] = hn::Load(d, s.t + o);
+            q[j] = k.quaternionFromWorld(
+                hn::MulAdd(hn::Load(d, s.dx + o), t[j], hn::Load(d, s.ox + o)),
+                hn::MulAdd(hn::Load(d, s.dy + o), t[j], hn::Load(d, s.oy + o)),
+                hn::MulAdd(hn::Load(d, s.dz + o), t[j], hn::Load(d, s.oz + o)));
+        }
+        if (!anyLive) break;
+        LaneEstimate<D> e[K];
+        estimateLanes<kQuadratic, false>(d, k, q, live, e, counters);
+
+        bool anyDone = false;
+        for (size_t j = 0; j < K; ++j) {
+            const size_t o = j * lanes;
+            counters.estimates += int64_t(hn::CountTrue(d, live[j]));
+            auto blocked = hn::And(live[j], hn::Or(e[j].inside, e[j].distance < blockDistance));
+            // The penumbra: how nearly the ray grazed the set relative to how far it went.
+            V open = hn::Load(d, s.confirming + o);  // the running visibility of this ray
+            if (march.soft) {
+                open = hn::IfThenElse(t[j] > zero, hn::Min(open, softness * e[j].distance / t[j]),
+                                      open);
+            }
+            const V tNext = t[j] + hn::Max(e[j].distance, minimumStep);
+            const V steps = hn::Load(d, s.steps + o) + one;
+            auto cleared = hn::AndNot(
+                blocked,
+                hn::And(live[j], hn::Or(tNext >= hn::Load(d, s.tFar + o), steps >= maxSteps)));
+            auto done = hn::Or(blocked, cleared);
+            hn::Store(tNext, d, s.t + o);
+            hn::Store(open, d, s.confirming + o);
+            hn::Store(steps, d, s.steps + o);
+            hn::Store(hn::IfThenElseZero(done, one), d, finished.kind + o);
+            hn::Store(hn::IfThenZeroElse(blocked, march.soft ? open : one), d, finished.a + o);
+            anyDone = anyDone || !hn::AllFalse(d, done);
+        }
+        if (!anyDone) continue;
+        for (size_t lane = 0; lane < K * lanes; ++lane) {
+            if (finished.kind[lane] == T(0)) continue;
+            visibility[size_t(s.ray[lane])] = finished.a[lane];
+            s.load(lane, rays, next, /*startAtZero=*/true);
+        }
+    }
+}
+
+// Fractal::estimate for a batch of points, lanes filled in order (the last chunk padded).
+template <bool kQuadratic, class D>
+void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& points,
+                        std::vector<PointEstimate>& results, LaneCounters& counters) {
+    using T = hn::TFromD<D>;
+    const LaneConstants<D> k(d, fractal);
+    const size_t lanes = hn::Lanes(d);
+    results.assign(points.size(), PointEstimate{});
+    LaneScratch<T> in, out;
+    for (size_t begin = 0; begin < points.size(); begin += lanes) {
+        size_t count = std::min(lanes, points.size() - begin);
+        in.gather(points, begin, count);
+        const hn::Mask<D> live[1] = {hn::FirstN(d, count)};
+        QuaternionLanes<hn::Vec<D>> q[1] = {
+            k.quaternionFromWorld(hn::Load(d, in.a), hn::Load(d, in.b), hn::Load(d, in.c))};
+        LaneEstimate<D> estimates[1];
+        estimateLanes<kQuadratic, true>(d, k, q, live, estimates, counters);
+        const LaneEstimate<D>& e = estimates[0];
+        counters.estimates += int64_t(count);
+        hn::Store(e.distance, d, out.a);
+        hn::Store(hn::Sqrt(e.trapSquared), d, out.b);
+        hn::Store(e.iterations, d, out.c);
+        hn::Store(e.radiusSquared, d, out.kind);
+        hn::Store(hn::IfThenElseZero(e.inside, hn::Set(d, T(1))), d, in.kind);
+        for (size_t lane = 0; lane < count; ++lane) {
+            PointEstimate& r = results[begin + lane];
+            r.distance = out.a[lane];
+            r.trap = out.b[lane];
+            r.iterations = int(out.c[lane]);
+            r.radiusSquared = out.kind[lane];
+            r.inside = in.kind[lane] != T(0);
+        }
+    }
+}
+
+// Fractal::normal / JuliaSet::potentialGradient for a batch of points: the three tangents of
+// the slice carried through the Jacobian of p at each iterate (the chain rule), M_i iterations
+// in lane i.
+template <bool kQuadratic, class D>
+void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& points,
+                          const std::vector<int>& iterations, std::vector<Vector3d>& normals,
+                          LaneCounters& counters) {
+    using V = hn::Vec<D>;
+    using T = hn::TFromD<D>;
+    // Only the direction matters: rescale all three together before they overflow.
+    constexpr T kLarge = sizeof(T) == 4 ? T(1e30) : T(1e200);
+    constexpr T kShrink = sizeof(T) == 4 ? T(1e-10) : T(1e-100);
+    const LaneConstants<D> k(d, fractal);
+    const size_t lanes = hn::Lanes(d);
+    normals.assign(points.size(), Vector3d());
+    LaneScratch<T> in, out;
+    const V one = hn::Set(d, T(1));
+    for (size_t begin = 0; begin < points.size(); begin += lanes) {
+        size_t count = std::min(lanes, points.size() - begin);
+        in.gather(points, begin, count);
+        int most = 0;
+        for (size_t lane = 0; lane < lanes; ++lane) {
+            int m = lane < count ? iterations[begin + lane] : 0;
+            in.kind[lane] = T(m);
+            most = std::max(most, m);
+        }
+        const V m = hn::Load(d, in.kind);
+        auto z = k.quaternionFromWorld(hn::Load(d, in.a), hn::Load(d, in.b), hn::Load(d, in.c));
+        QuaternionLanes<V> t0 = k.axis0, t1 = k.axis1, t2 = k.axis2;
+        V n = hn::Zero(d);
+        for (int iteration = 0; iteration < most; ++iteration) {
+            auto running = n < m;
+            counters.laneIterations += int64_t(hn::CountTrue(d, running));
+            counters.laneSlots += int64_t(lanes);
+            if constexpr (kQuadratic) {
+                t0 = select(running, quadraticDerivativeLanes(z, t0, k.scale), t0);
+                t1 = select(running, quadraticDerivativeLanes(z, t1, k.scale), t1);
+                t2 = select(running, quadraticDerivativeLanes(z, t2, k.scale), t2);
+                z = select(running, quadraticStepLanes(z, k.scale, k.c), z);
+            } else {
+                t0 = select(running, powerDerivativeLanes(z, t0, k.degree, k.scale), t0);
+                t1 = select(running, powerDerivativeLanes(z, t1, k.degree, k.scale), t1);
+                t2 = select(running, powerDerivativeLanes(z, t2, k.degree, k.scale), t2);
+                z = select(running, powerStepLanes(z, k.degree, k.scale, k.c), z);
+            }
+            n = n + one;
+            V largest =
+                hn::Max(normSquaredLanes(t0), hn::Max(normSquaredLanes(t1), normSquaredLanes(t2)));
+            auto huge = largest > hn::Set(d, kLarge);
+            if (!hn::AllFalse(d, huge)) {
+                const V factor = hn::IfThenElse(huge, hn::Set(d, kShrink), one);
+                t0 = {t0.w * factor, t0.x * factor, t0.y * factor, t0.z * factor};
+                t1 = {t1.w * factor, t1.x * factor, t1.y * factor, t1.z * factor};
+                t2 = {t2.w * factor, t2.x * factor, t2.y * factor, t2.z * factor};
+            }
+        }
+        hn::Store(dotLanes(z, t0), d, out.a);
+        hn::Store(dotLanes(z, t1), d, out.b);
+        hn::Store(dotLanes(z, t2), d, out.c);
+        for (size_t lane = 0; lane < count; ++lane) {
+            Vector3d g(out.a[lane], out.b[lane], out.c[lane]);
+            Point3d p(points.x[begin + lane], points.y[begin + lane], points.z[begin + lane]);
+            normals[begin + lane] = normalOrOutward(g, p);
+        }
+    }
+}
+
+// Each kernel in both precisions and both forms, chosen at run time.
+template <template <bool, class> class Kernel, class... Args>
+void run(const LaneFractal& fractal, Args&&... args) {
+    const bool quadratic = fractal.degree == 2;
+    if (fractal.precision == Precision::Double) {
+        const hn::ScalableTag<double> d;
+        quadratic ? Kernel<true, decltype(d)>::run(d, fractal, args...)
+                  : Kernel<false, decltype(d)>::run(d, fractal, args...);
+    } else {
+        const hn::ScalableTag<float> d;
+        quadratic ? Kernel<true, decltype(d)>::run(d, fractal, args...)
+                  : Kernel<false, decltype(d)>::run(d, fractal, args...);
+    }
+}
+
+template <bool kQuadratic, class D>
+struct CameraKernel {
+    template <class... Args>
+    static void run(D d, const LaneFractal& f, Args&... args) {
+        traceCameraLanes<kQuadratic>(d, f, args...);
+    }
+};
+template <bool kQuadratic, class D>
+struct ShadowKernel {
+    template <class... Args>
+    static void run(D d, const LaneFractal& f, Args&... args) {
+        traceShadowLanes<kQuadratic>(d, f, args...);
+    }
+};
+template <bool kQuadratic, class D>
+struct EstimateKernel {
+    template <class... Args>
+    static void run(D d, const LaneFractal& f, Args&... args) {
+        estimatePointLanes<kQuadratic>(d, f, args...);
+    }
+};
+template <bool kQuadratic, class D>
+struct NormalKernel {
+    template <class... Args>
+    static void run(D d, const LaneFractal& f, Args&... args) {
+        potentialNormalLanes<kQuadratic>(d, f, args...);
+    }
+};
+
+void TraceCameraRays(const LaneFractal& fractal, const CameraMarch& march, const RayBatch& rays,
+                     std::vector<TraceResult>& results, LaneCounters& counters) {
+    run<CameraKernel>(fractal, march, rays, results, counters);
+}
+void TraceShadowRays(const LaneFractal& fractal, const ShadowMarch& march, const RayBatch& rays,
+                     std::vector<double>& visibility, LaneCounters& counters) {
+    run<ShadowKernel>(fractal, march, rays, visibility, counters);
+}
+void EstimatePoints(const LaneFractal& fractal, const PointBatch& points,
+                    std::vector<PointEstimate>& results, LaneCounters& counters) {
+    run<EstimateKernel>(fractal, points, results, counters);
+}
+void PotentialNormals(const LaneFractal& fractal, const PointBatch& points,
+                      const std::vector<int>& iterations, std::vector<Vector3d>& normals,
+                      LaneCounters& counters) {
+    run<NormalKernel>(fractal, points, iterations, normals, counters);
+}
+const char* TargetName() {
+    return hwy::TargetName(HWY_TARGET);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace quaternia
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace quaternia {
+
+HWY_EXPORT(TraceCameraRays);
+HWY_EXPORT(TraceShadowRays);
+HWY_EXPORT(EstimatePoints);
+HWY_EXPORT(PotentialNormals);
+HWY_EXPORT(TargetName);
+
+void traceCameraRays(const LaneFractal& fractal, const CameraMarch& march, const RayBatch& rays,
+                     std::vector<TraceResult>& results, LaneCounters& counters) {
+    HWY_DYNAMIC_DISPATCH(TraceCameraRays)(fractal, march, rays, results, counters);
+}
+void traceShadowRays(const LaneFractal& fractal, const ShadowMarch& march, const RayBatch& rays,
+                     std::vector<double>& visibility, LaneCounters& counters) {
+    HWY_DYNAMIC_DISPATCH(TraceShadowRays)(fractal, march, rays, visibility, counters);
+}
+void estimatePoints(const LaneFractal& fractal, const PointBatch& points,
+                    std::vector<PointEstimate>& results, LaneCounters& counters) {
+    HWY_DYNAMIC_DISPATCH(EstimatePoints)(fractal, points, results, counters);
+}
+void potentialNormals(const LaneFractal& fractal, const PointBatch& points,
+                      const std::vector<int>& iterations, std::vector<Vector3d>& normals,
+                      LaneCounters& counters) {
+    HWY_DYNAMIC_DISPATCH(PotentialNormals)(fractal, points, iterations, normals, counters);
+}
+const char* laneTargetName() {
+    return HWY_DYNAMIC_DISPATCH(TargetName)();
+}
+
+}  // namespace quaternia
+#endif  // HWY_ONCE

@@ -1,0 +1,73 @@
+// The SIMD path of render(): a tile's camera rays marched together in lanes, then its hits
+// shaded in batches (normals, shadow rays, ambient occlusion), each batch one call of the packet
+// kernels (packet_kernels.h). The lighting itself is the scalar path's (Shader::light), so both
+// paths make the same picture up to the precision of the lanes.
+#pragma once
+
+#include <vector>
+
+#include "camera.h"
+#include "march.h"
+#include "packet_kernels.h"
+#include "shade.h"
+#include "util/parallel.h"
+
+namespace quaternia {
+
+// The samples of one pixel, summed.
+struct PixelSamples {
+    Color sum;
+    double depthSum = 0;
+    int hits = 0;
+};
+
+// Work of one tile, for RenderStats.
+struct PacketTileStats {
+    int64_t marchSteps = 0;
+    LaneCounters camera, shading;
+};
+
+// One per thread: owns the batches, so that after the first tiles nothing is allocated.
+class PacketTileRenderer {
+  public:
+    PacketTileRenderer(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
+                       const MarchSettings& march, int samples);
+
+    // Marches and shades every sample of every pixel of the tile; pixels[(y - y0) * width +
+    // (x - x0)] receives the sums of pixel (x, y).
+    void render(const Tile& tile, std::vector<PixelSamples>& pixels, PacketTileStats& stats);
+
+  private:
+    void shadeHits(PacketTileStats& stats);
+
+    LaneFractal lanes_;
+    const Camera& camera_;
+    const Shader& shader_;
+    CameraMarch march_;
+    int samples_;
+    double boundingRadius_;
+
+    // The batches of the current sample of the tile.
+    RayBatch rays_;
+    std::vector<int> rayPixel_;  // which pixel of the tile each ray belongs to
+    std::vector<TraceResult> traced_;
+    struct HitRecord {
+        int pixel;
+        double t;
+        Vector3d direction;
+        Point3d outside;
+    };
+    std::vector<HitRecord> hits_;
+    PointBatch hitPoints_;
+    std::vector<PointEstimate> hitEstimates_;
+    std::vector<int> gradientIterations_;
+    std::vector<Vector3d> normals_;
+    RayBatch shadowRays_;
+    std::vector<int> shadowHit_;
+    std::vector<double> shadowVisibility_;
+    PointBatch occlusionPoints_;
+    std::vector<PointEstimate> occlusionEstimates_;
+    std::vector<Color> colors_;
+};
+
+}  // namespace quaternia
