@@ -1,0 +1,179 @@
+// The SIMD kernels against the scalar reference they mirror (distance.cpp, fractal.cpp,
+// march.cpp): the same estimates, normals and march ends, in double lanes to rounding and in
+// float lanes to the precision of floats.
+#include "packet_kernels.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "camera.h"
+#include "formula.h"
+#include "march.h"
+#include "parameters.h"
+#include "test_scenes.h"
+
+namespace quaternia {
+namespace {
+
+Fractal tiltedFractal() {
+    Scene scene = testing::referenceScene("case06_sqr_A_tilt");
+    scene.slice.anglesDegrees = {10, 0, 20, 0, 30, 0};  // and a 4D rotation on top of the tilt
+    return Fractal::fromScene(scene);
+}
+
+PointBatch randomPoints(int count, double radius, unsigned seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> coordinate(-radius, radius);
+    PointBatch points;
+    for (int i = 0; i < count; ++i)
+        points.push(Point3d(coordinate(random), coordinate(random), coordinate(random)));
+    return points;
+}
+
+TEST(LaneFractal, AffineMapEqualsTheSlice) {
+    Fractal fractal = tiltedFractal();
+    auto lanes = LaneFractal::from(fractal, Precision::Double);
+    ASSERT_TRUE(lanes);
+    PointBatch points = randomPoints(50, 2, 1);
+    for (size_t i = 0; i < points.size(); ++i) {
+        Point3d p(points.x[i], points.y[i], points.z[i]);
+        Quaternion q = fractal.slice().quaternionFromWorld(p);
+        for (int c = 0; c < 4; ++c) {
+            double mapped = lanes->origin[c] + p.x * lanes->axes[0][c] + p.y * lanes->axes[1][c] +
+                            p.z * lanes->axes[2][c];
+            EXPECT_NEAR(mapped, q[c], 1e-12);
+        }
+    }
+}
+
+TEST(LaneFractal, OnlyPowerFormsTakeTheLanes) {
+    Scene scene = testing::referenceScene("case01_sqr_A");
+    EXPECT_TRUE(LaneFractal::from(Fractal::fromScene(scene), Precision::Single));
+    scene.fractal.formula = "z^3 + c";
+    EXPECT_TRUE(LaneFractal::from(Fractal::fromScene(scene), Precision::Single));
+    scene.fractal.formula = "i*z*j*z + c";
+    EXPECT_FALSE(LaneFractal::from(Fractal::fromScene(scene), Precision::Single));
+}
+
+// Double lanes compute what JuliaSet::estimate computes; float lanes agree on membership except
+// within rounding of the boundary, and on distance within the float continuation's accuracy.
+void expectEstimatesMatch(const Fractal& fractal, unsigned seed) {
+    PointBatch points = randomPoints(3000, 1.6, seed);
+    for (Precision precision : {Precision::Double, Precision::Single}) {
+        auto lanes = LaneFractal::from(fractal, precision);
+        ASSERT_TRUE(lanes);
+        std::vector<PointEstimate> estimates;
+        LaneCounters counters;
+        estimatePoints(*lanes, points, estimates, counters);
+        ASSERT_EQ(estimates.size(), points.size());
+        EXPECT_EQ(counters.estimates, int64_t(points.size()));
+        int membershipMismatches = 0, insideCount = 0;
+        for (size_t i = 0; i < points.size(); ++i) {
+            DistanceEstimate reference =
+                fractal.estimate(Point3d(points.x[i], points.y[i], points.z[i]));
+            const PointEstimate& e = estimates[i];
+            insideCount += reference.inside;
+            if (e.inside != reference.inside) {
+                ++membershipMismatches;
+                continue;
+            }
+            if (precision == Precision::Double) {
+                ASSERT_NEAR(e.distance, reference.distance, 1e-9 * (1 + reference.distance));
+                ASSERT_EQ(e.iterations, reference.iterations);
+                ASSERT_NEAR(e.trap, reference.trap, 1e-9);
+            } else if (!reference.inside) {
+                // The float lanes stop the continuation at |z| = 100 rather than 1e4.
+                ASSERT_NEAR(e.distance, reference.distance, 0.2 * reference.distance + 1e-5);
+            }
+        }
+        EXPECT_GT(insideCount, 30);
+        EXPECT_LE(membershipMismatches, precision == Precision::Double ? 0 : 3);
+    }
+}
+
+TEST(PacketKernels, EstimatesMatchTheScalarReference) {
+    expectEstimatesMatch(Fractal::fromScene(testing::referenceScene("case01_sqr_A")), 2);
+    expectEstimatesMatch(Fractal::fromScene(testing::referenceScene("case08_cube_F")), 3);
+    expectEstimatesMatch(tiltedFractal(), 4);
+}
+
+// Points just outside the set (where the renderer takes normals): the lanes' analytic gradient
+// points the way of Fractal::normal.
+TEST(PacketKernels, NormalsMatchTheAnalyticNormal) {
+    for (const char* id : {"case01_sqr_A", "case08_cube_F"}) {
+        Fractal fractal = Fractal::fromScene(testing::referenceScene(id));
+        PointBatch all = randomPoints(4000, 1.6, 5), nearSet;
+        std::vector<int> iterations;
+        for (size_t i = 0; i < all.size(); ++i) {
+            Point3d p(all.x[i], all.y[i], all.z[i]);
+            DistanceEstimate e = fractal.estimate(p);
+            if (e.inside || e.distance > 0.05) continue;
+            nearSet.push(p);
+            iterations.push_back(
+                fractal.set().gradientIterations(fractal.slice().quaternionFromWorld(p)));
+        }
+        ASSERT_GT(nearSet.size(), 50u) << id;
+        for (Precision precision : {Precision::Double, Precision::Single}) {
+            std::vector<Vector3d> normals;
+            LaneCounters counters;
+            potentialNormals(*LaneFractal::from(fractal, precision), nearSet, iterations, normals,
+                             counters);
+            int poor = 0;
+            for (size_t i = 0; i < nearSet.size(); ++i) {
+                Vector3d reference =
+                    fractal.normal(Point3d(nearSet.x[i], nearSet.y[i], nearSet.z[i]));
+                EXPECT_NEAR(length(normals[i]), 1.0, 1e-6);
+                double agreement = dot(normals[i], reference);
+                if (precision == Precision::Double) {
+                    EXPECT_GT(agreement, 1 - 1e-9) << id;
+                } else {
+                    poor += agreement < 0.999;
+                }
+            }
+            EXPECT_LE(poor, int(nearSet.size() / 100)) << id;
+        }
+    }
+}
+
+// Camera rays in double lanes end as sphereTrace's do: the same kind of end at the same t.
+TEST(PacketKernels, CameraRaysEndWhereSphereTracingEnds) {
+    Scene scene = testing::referenceScene("case01_sqr_A");
+    Fractal fractal = Fractal::fromScene(scene);
+    Camera camera(scene.camera, 64, 48);
+    MarchSettings settings{MarchMethod::SphereTracing, 0, scene.render.epsilon,
+                           camera.pixelFootprint(1.0), scene.render.maxSteps};
+    RayBatch rays;
+    std::vector<Ray> kept;
+    for (int y = 0; y < 48; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            Ray ray = camera.generateRay(x + 0.5, y + 0.5);
+            auto interval = intersectSphere(ray, fractal.boundingRadius());
+            if (!interval) continue;
+            rays.push(ray, interval->tNear, interval->tFar);
+            kept.push_back(ray);
+        }
+    }
+    std::vector<TraceResult> results;
+    LaneCounters counters;
+    traceCameraRays(*LaneFractal::from(fractal, Precision::Double),
+                    CameraMarch{settings.epsilon, settings.pixelAngle, settings.maxSteps}, rays,
+                    results, counters);
+    int hits = 0;
+    for (size_t i = 0; i < kept.size(); ++i) {
+        MarchResult reference = sphereTrace(fractal, kept[i], settings);
+        ASSERT_EQ(results[i].end != TraceEnd::Miss, bool(reference.hit)) << i;
+        EXPECT_EQ(results[i].steps, reference.steps);
+        if (!reference.hit) continue;
+        ++hits;
+        EXPECT_NEAR(results[i].t, reference.hit->t, 1e-9);
+        EXPECT_NEAR(results[i].tOutside,
+                    dot(reference.hit->outside - kept[i].origin, kept[i].direction), 1e-9);
+    }
+    EXPECT_GT(hits, 300);
+    EXPECT_GT(counters.laneSlots, 0);
+    EXPECT_LE(counters.laneIterations, counters.laneSlots);
+}
+
+}  // namespace
+}  // namespace quaternia
