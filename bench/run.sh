@@ -21,16 +21,25 @@ ms = statistics.median(r["seconds"] for r in runs) * 1000
 rate = statistics.median(r["rays_per_second"] for r in runs)
 r = runs[0]
 size = "%dx%d" % (r["width"], r["height"])
-print("%-24s %-10s %3d spp %9.1f ms/frame %8.3f Mrays/s  (median of %d, %d threads)"
-      % (sys.argv[1], size, r["samples"], ms, rate / 1e6, len(runs), r["threads"]))
+print("%-28s %-10s %8.1f ms %6.1f fps %8.2f Mrays/s  %-7s lanes %3.0f%%  steps/ray %5.1f  iter/ray %5.0f  shading/hit %4.1f  (median of %d, %d threads)"
+      % (sys.argv[1], size, ms, 1000 / ms, rate / 1e6, r["engine"], 100 * r["lane_utilisation"],
+         r["march_steps"] / r["rays"], r["iterations"] / r["rays"],
+         r["shading_estimates"] / max(1, r["hits"]), len(runs), r["threads"]))
 ' "$name"
 }
 
-echo "scene                    size       samples   time per frame   speed"
-scene default-1080p --width 1920 --height 1080 --set render.samples=1
-scene default-preview-360p --width 640 --height 360 --set render.samples=1
+# The default benchmark scene: the default scene at 1920x1080, 1 sample, key light with soft
+# shadows and ambient occlusion (the scene's defaults). Frame time is the render itself (the
+# "seconds" of --json), not the process start or the PNG encoding.
+one_spp=(--set render.samples=1)
+echo "scene                        size         time     rate     speed    path    lanes   counters"
+scene default-1080p --width 1920 --height 1080 "${one_spp[@]}"
+scene default-1080p-1-thread --width 1920 --height 1080 "${one_spp[@]}" --threads 1
+scene default-1080p-double --width 1920 --height 1080 "${one_spp[@]}" --set render.precision=double
+scene default-1080p-scalar --width 1920 --height 1080 "${one_spp[@]}" --set render.engine=scalar
+scene default-preview-360p --width 640 --height 360 "${one_spp[@]}"
 scene default-720p-4spp
-scene case01-shaded-1080p tests/data/reference/case01_sqr_A.toml --width 1920 --height 1080
+scene case01-shaded-1080p bench/scenes/case01_sqr_A_shaded.toml
 # Meshes of the default scene: median time and peak memory (GNU time's maximum resident set).
 mesh() {  # resolution
   for _ in $(seq "$runs"); do
