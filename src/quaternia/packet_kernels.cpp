@@ -507,6 +507,26 @@ void PotentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       LaneCounters& counters) {
     run<NormalKernel>(fractal, points, iterations, normals, counters);
 }
+void EncodeDisplay(float* values, size_t count, float exposure, float inverseGamma) {
+    const hn::ScalableTag<float> d;
+    const size_t lanes = hn::Lanes(d);
+    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), scale = hn::Set(d, exposure),
+               power = hn::Set(d, inverseGamma), tiny = hn::Set(d, 1e-30f);
+    auto encode = [&](hn::Vec<decltype(d)> v) {
+        v = hn::Min(one, hn::Max(zero, v * scale));
+        // v^g = exp(g ln v); v = 0 gives 0.
+        return hn::IfThenZeroElse(v <= zero, hn::Exp(d, power * hn::Log(d, hn::Max(v, tiny))));
+    };
+    size_t i = 0;
+    for (; i + lanes <= count; i += lanes)
+        hn::StoreU(encode(hn::LoadU(d, values + i)), d, values + i);
+    if (i < count) {
+        alignas(kMaxLaneBytes) float tail[kMaxLaneBytes / sizeof(float)] = {};
+        std::copy(values + i, values + count, tail);
+        hn::Store(encode(hn::Load(d, tail)), d, tail);
+        std::copy(tail, tail + (count - i), values + i);
+    }
+}
 const char* TargetName() {
     return hwy::TargetName(HWY_TARGET);
 }
@@ -522,6 +542,7 @@ HWY_EXPORT(TraceCameraRays);
 HWY_EXPORT(TraceShadowRays);
 HWY_EXPORT(EstimatePoints);
 HWY_EXPORT(PotentialNormals);
+HWY_EXPORT(EncodeDisplay);
 HWY_EXPORT(TargetName);
 
 void traceCameraRays(const LaneFractal& fractal, const CameraMarch& march, const RayBatch& rays,
@@ -540,6 +561,9 @@ void potentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       const std::vector<int>& iterations, std::vector<Vector3d>& normals,
                       LaneCounters& counters) {
     HWY_DYNAMIC_DISPATCH(PotentialNormals)(fractal, points, iterations, normals, counters);
+}
+void encodeDisplay(float* values, size_t count, float exposure, float inverseGamma) {
+    HWY_DYNAMIC_DISPATCH(EncodeDisplay)(values, count, exposure, inverseGamma);
 }
 const char* laneTargetName() {
     return HWY_DYNAMIC_DISPATCH(TargetName)();

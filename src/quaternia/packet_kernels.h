@@ -109,6 +109,10 @@ void potentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       const std::vector<int>& iterations, std::vector<Vector3d>& normals,
                       LaneCounters& counters);
 
+// Display encoding of linear values in place: min(1, max(0, v * exposure))^inverseGamma, as
+// Shader::toDisplay, many values at once.
+void encodeDisplay(float* values, size_t count, float exposure, float inverseGamma);
+
 // The SIMD target the dispatcher chose on this CPU, e.g. "AVX2".
 const char* laneTargetName();
 

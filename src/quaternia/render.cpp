@@ -39,6 +39,7 @@ struct alignas(64) ThreadTotals {
     RenderStats stats;
     std::unique_ptr<PacketTileRenderer> packets;  // the SIMD path's batches
     std::vector<PixelSamples> pixels;
+    std::vector<float> display;  // a tile's colours on their way to display encoding
 };
 
 }  // namespace
@@ -93,11 +94,13 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     result.stats.engine = lanes ? laneTargetName() : "scalar";
 
     // A pixel's samples to its colour, alpha and depth: the same for both paths.
-    auto finishPixel = [&](int px, int py, const PixelSamples& samplesOfPixel, RenderStats& stats) {
+    // `encode` false leaves linear colour for the caller to encode (the SIMD path, a tile at once).
+    auto finishPixel = [&](int px, int py, const PixelSamples& samplesOfPixel, RenderStats& stats,
+                           bool encode) {
         const int hits = samplesOfPixel.hits;
         stats.rays += samples;
         stats.hits += hits;
-        Color background = shader.background(camera.generateRay(px + 0.5, py + 0.5));
+        const Color& background = samplesOfPixel.background;
         double coverage = double(hits) / samples;
         Color color;
         if (settings.alpha == AlphaMode::Opaque) {
@@ -106,7 +109,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         } else {
             color = hits > 0 ? samplesOfPixel.sum / double(hits) : background;
         }
-        Color display = shader.toDisplay(color);
+        Color display = encode ? shader.toDisplay(color) : color;
         result.image.at(px, py) =
             Rgba{float(display.x), float(display.y), float(display.z), float(coverage)};
         if (options.depth) {
@@ -131,7 +134,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             pixel.depthSum += marched.hit->t;
         }
         stats.shadingEstimates += shading.estimates;
-        finishPixel(px, py, pixel, stats);
+        pixel.background = shader.background(camera.generateRay(px + 0.5, py + 0.5));
+        finishPixel(px, py, pixel, stats, true);
     };
 
     auto renderTilePackets = [&](const Tile& tile, ThreadTotals& thread) {
@@ -148,10 +152,23 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         stats.laneIterations += tileStats.camera.laneIterations + tileStats.shading.laneIterations;
         stats.laneSlots += tileStats.camera.laneSlots + tileStats.shading.laneSlots;
         const int width = tile.x1 - tile.x0;
+        std::vector<float>& linear = thread.display;
+        linear.clear();
         for (int py = tile.y0; py < tile.y1; ++py) {
-            for (int px = tile.x0; px < tile.x1; ++px)
+            for (int px = tile.x0; px < tile.x1; ++px) {
                 finishPixel(px, py, thread.pixels[size_t((py - tile.y0) * width + px - tile.x0)],
-                            stats);
+                            stats, false);
+                const Rgba& c = result.image.at(px, py);
+                linear.insert(linear.end(), {c.r, c.g, c.b});
+            }
+        }
+        shader.toDisplay(linear.data(), linear.size());
+        const float* encoded = linear.data();
+        for (int py = tile.y0; py < tile.y1; ++py) {
+            for (int px = tile.x0; px < tile.x1; ++px, encoded += 3) {
+                Rgba& c = result.image.at(px, py);
+                c.r = encoded[0], c.g = encoded[1], c.b = encoded[2];
+            }
         }
     };
 

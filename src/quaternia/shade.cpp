@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "packet_kernels.h"
+
 namespace quaternia {
 namespace {
 
@@ -142,6 +144,10 @@ Color Shader::light(const SurfaceSample& sample, const Ray& ray) const {
 Color Shader::background(const Ray& ray) const {
     double v = 0.5 + 0.5 * ray.direction.y;
     return lerp(settings_.backgroundBottom, settings_.backgroundTop, v);
+}
+
+void Shader::toDisplay(float* linear, size_t count) const {
+    encodeDisplay(linear, count, float(settings_.exposure), float(1.0 / settings_.gamma));
 }
 
 Color Shader::toDisplay(const Color& linear) const {

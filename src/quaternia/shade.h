@@ -65,6 +65,8 @@ class Shader {
     Color light(const SurfaceSample& sample, const Ray& ray) const;
     // Exposure, clamp to [0, 1] and gamma: the values written to an 8- or 16-bit image.
     Color toDisplay(const Color& linear) const;
+    // The same for many values in place (SIMD, packet_kernels.h; equal to float rounding).
+    void toDisplay(float* linear, size_t count) const;
 
   private:
     ShadingSettings settings_;
