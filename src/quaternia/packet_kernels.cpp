@@ -32,9 +32,12 @@ struct LaneConstants {
     V scale, bailoutSquared, escapeRadiusSquared, estimateRadiusSquared, stepScale, maxIterations;
     V gainFactor;  // 4 s^2 for d = 2, s^2 d^2 otherwise
     int degree, maxIterationCount;
+    bool certified;  // bailout >= the certified escape radius: every escape is final
 
     LaneConstants(D d, const LaneFractal& f)
-        : degree(f.degree), maxIterationCount(f.maxIterations) {
+        : degree(f.degree),
+          maxIterationCount(f.maxIterations),
+          certified(f.bailoutSquared >= f.escapeRadiusSquared) {
         using T = hn::TFromD<D>;
         auto lanes = [&](const std::array<double, 4>& q) {
             return QuaternionLanes<V>{hn::Set(d, T(q[0])), hn::Set(d, T(q[1])), hn::Set(d, T(q[2])),
@@ -116,11 +119,16 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
     }
     const int64_t lanes = int64_t(hn::Lanes(d));
     const int iterationCap = k.maxIterationCount + kMaxContinuation;
-    for (int n = 1; n < iterationCap && !allDone; ++n) {
+    // Where the bailout is at least the certified escape radius (the default), every escape is
+    // final and |z| grows from then on: a lane stops at the estimate radius, and the lanes not
+    // escaped after N iterates are inside; the escaped mask is then needed only for the trap.
+    const bool certified = !kOrbit && k.certified;
+    V iteration = hn::Zero(d);
+    int n = 1;
+    for (; n < iterationCap && !allDone; ++n) {
         allDone = true;
+        iteration = iteration + one;
         for (size_t j = 0; j < K; ++j) {
-            counters.laneIterations += lanes - int64_t(hn::CountTrue(d, done[j]));
-            counters.laneSlots += lanes;
             if constexpr (kQuadratic) {
                 derivativeSquared[j] = derivativeSquared[j] * (k.gainFactor * r2[j]);
                 z[j] = quadraticStepLanes(z[j], k.scale, k.c);
@@ -132,6 +140,21 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
                 z[j] = powerStepLanes(z[j], k.degree, k.scale, k.c);
             }
             r2[j] = normSquaredLanes(z[j]);
+            if (certified) {
+                auto stopNow = hn::AndNot(done[j], r2[j] >= k.estimateRadiusSquared);
+                if (n + 1 >= k.maxIterationCount) {
+                    const auto insideNow = hn::AndNot(done[j], r2[j] <= k.bailoutSquared);
+                    inside[j] = hn::Or(inside[j], insideNow);
+                    stopNow = hn::Or(stopNow, insideNow);
+                }
+                stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
+                stopDerivativeSquared[j] =
+                    hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
+                stopIteration[j] = hn::IfThenElse(stopNow, iteration, stopIteration[j]);
+                done[j] = hn::Or(done[j], stopNow);
+                allDone = allDone && hn::AllTrue(d, done[j]);
+                continue;
+            }
             const auto settled = hn::Or(escaped[j], done[j]);  // before this iterate
             if constexpr (kOrbit)
                 trap[j] = hn::IfThenElse(settled, trap[j], hn::Min(trap[j], r2[j]));
@@ -150,9 +173,7 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
             stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
             stopDerivativeSquared[j] =
                 hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
-            if constexpr (kOrbit) {
-                stopIteration[j] = hn::IfThenElse(stopNow, hn::Set(d, T(n)), stopIteration[j]);
-            }
+            stopIteration[j] = hn::IfThenElse(stopNow, iteration, stopIteration[j]);
             done[j] = hn::Or(done[j], stopNow);
             allDone = allDone && hn::AllTrue(d, done[j]);
         }
@@ -161,10 +182,11 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
         const auto unfinished = hn::Not(done[j]);  // the continuation cap ended them
         V radiusSquared = hn::IfThenElse(unfinished, r2[j], stopRadiusSquared[j]);
         V derivative = hn::IfThenElse(unfinished, derivativeSquared[j], stopDerivativeSquared[j]);
-        if constexpr (kOrbit) {
-            stopIteration[j] =
-                hn::IfThenElse(unfinished, hn::Set(d, T(iterationCap - 1)), stopIteration[j]);
-        }
+        stopIteration[j] = hn::IfThenElse(unfinished, iteration, stopIteration[j]);
+        // Utilisation: each lane did useful work until it stopped; the slots are all lanes.
+        counters.laneIterations +=
+            int64_t(hn::GetLane(hn::SumOfLanes(d, hn::IfThenElseZero(live[j], stopIteration[j]))));
+        counters.laneSlots += lanes * int64_t(n - 1);
         // d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2) ln |z|^2; an overflowed |z'|^2
         // gives 0, which is right: the distance is then far below any step.
         V distance =
