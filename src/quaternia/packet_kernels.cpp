@@ -222,7 +222,8 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
 
     const V zero = hn::Zero(d), one = hn::Set(d, T(1));
     const V epsilon = hn::Set(d, T(march.epsilon)), pixelAngle = hn::Set(d, T(march.pixelAngle));
-    const V confirmBudget = hn::Set(d, T(kMarchConfirmBudget));
+    const V confirmBudget = hn::Set(d, T(march.cone ? 0 : kMarchConfirmBudget));
+    const V coneShrink = march.cone ? one : zero;
     const V maxSteps = hn::Set(d, T(march.maxSteps));
     for (;;) {
         M live[K];
@@ -255,7 +256,7 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
             auto grazing = hn::AndNot(e[j].inside, hn::And(live[j], confirming > confirmBudget));
             V step = hn::IfThenElse(confirming > zero,
                                     hn::Max(e[j].distance, hn::Set(d, kConfirmStep) * footprint),
-                                    e[j].distance);
+                                    hn::NegMulAdd(coneShrink, footprint, e[j].distance));
             const V tNext = t[j] + step;
             auto ended = hn::Or(insideHit, grazing);
             auto missed = hn::AndNot(ended, hn::And(live[j], hn::Or(tNext > hn::Load(d, s.tFar + o),
@@ -284,7 +285,9 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
                 r.tOutside = finished.b[lane];
             } else if (finished.kind[lane] == T(2)) {
                 r.end = TraceEnd::Grazing;
-                r.tOutside = r.t;
+                // A cone's last point may be inside for some of its rays; the one before is
+                // covered by an estimate's ball.
+                r.tOutside = march.cone ? finished.b[lane] : r.t;
             }
             s.load(lane, rays, next);
         }

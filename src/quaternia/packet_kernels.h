@@ -70,12 +70,19 @@ struct CameraMarch {
     double epsilon = 0.25;     // in pixel footprints
     double pixelAngle = 1e-3;  // footprint per unit of t
     int maxSteps = 5000;
+    // Cone marching: each ray stands for a cone of radius pixelAngle * t about it, steps by the
+    // estimate less that radius (so the ball of the estimate covers the cone's next stretch),
+    // and ends (Grazing) as soon as the estimate is below epsilon radii (epsilon > 1, so that
+    // steps stay at least (epsilon - 1) radii long): no confirmation. A miss before maxSteps
+    // means no ray inside the cone meets the set before tFar.
+    bool cone = false;
 };
 enum class TraceEnd : uint8_t { Miss, Inside, Grazing };
 struct TraceResult {
     TraceEnd end = TraceEnd::Miss;
     double t = 0;         // where it ended
-    double tOutside = 0;  // the last point known outside (t itself for Grazing)
+    double tOutside = 0;  // the last point known outside (t itself for a Grazing ray; the
+                          // point before for a Grazing cone)
     int steps = 0;
 };
 void traceCameraRays(const LaneFractal& fractal, const CameraMarch& march, const RayBatch& rays,

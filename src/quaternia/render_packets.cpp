@@ -1,6 +1,7 @@
 #include "render_packets.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "render.h"
 
@@ -20,6 +21,8 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
                                 PacketTileStats& stats) {
     const int width = tile.x1 - tile.x0;
     pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{});
+    marchCones(tile, stats);
+    const int blocksAcross = (width + kConeBlock - 1) / kConeBlock;
     for (int k = 0; k < samples_; ++k) {
         rays_.clear();
         rayPixel_.clear();
@@ -34,7 +37,11 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
                 }
                 auto interval = intersectSphere(ray, boundingRadius_);
                 if (!interval) continue;
-                rays_.push(ray, interval->tNear, interval->tFar);
+                const double start = blockStart_[size_t(
+                    ((py - tile.y0) / kConeBlock) * blocksAcross + (px - tile.x0) / kConeBlock)];
+                const double near = std::max(interval->tNear, start);
+                if (near > interval->tFar) continue;  // the cone found nothing on this ray
+                rays_.push(ray, near, interval->tFar);
                 rayPixel_.push_back((py - tile.y0) * width + (px - tile.x0));
             }
         }
@@ -58,6 +65,64 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
             pixel.sum += colors_[h];
             pixel.depthSum += hits_[h].t;
             ++pixel.hits;
+        }
+    }
+}
+
+void PacketTileRenderer::marchCones(const Tile& tile, PacketTileStats& stats) {
+    const int width = tile.x1 - tile.x0, height = tile.y1 - tile.y0;
+    const int across = (width + kConeBlock - 1) / kConeBlock;
+    const int down = (height + kConeBlock - 1) / kConeBlock;
+    blockStart_.assign(size_t(across * down), 0.0);
+    cones_.clear();
+    coneBlock_.clear();
+    // The cone about a block's central ray holds every ray through the block: points at the same
+    // t lie within t |d - d_centre| of each other, largest at the block's corners.
+    double ratio = 0;
+    std::vector<Ray>& centres = coneCentres_;
+    centres.clear();
+    for (int by = 0; by < down; ++by) {
+        for (int bx = 0; bx < across; ++bx) {
+            const double x0 = tile.x0 + bx * kConeBlock, y0 = tile.y0 + by * kConeBlock;
+            const double x1 = std::min<double>(x0 + kConeBlock, tile.x1);
+            const double y1 = std::min<double>(y0 + kConeBlock, tile.y1);
+            Ray centre = camera_.generateRay(0.5 * (x0 + x1), 0.5 * (y0 + y1));
+            for (double cx : {x0, x1}) {
+                for (double cy : {y0, y1})
+                    ratio = std::max(
+                        ratio, length(camera_.generateRay(cx, cy).direction - centre.direction));
+            }
+            centres.push_back(centre);
+        }
+    }
+    ratio = ratio * 1.01 + 1e-12;
+    // Every ray of the block is inside the bounding sphere only where the central ray is inside
+    // the sphere grown by the cone's widest radius there.
+    const double farthest = length(centres.front().origin) + boundingRadius_;
+    for (size_t b = 0; b < centres.size(); ++b) {
+        auto interval = intersectSphere(centres[b], boundingRadius_ + ratio * farthest);
+        if (!interval) {
+            blockStart_[b] = std::numeric_limits<double>::infinity();
+            continue;
+        }
+        cones_.push(centres[b], interval->tNear, interval->tFar);
+        coneBlock_.push_back(int(b));
+    }
+    CameraMarch coneMarch = march_;
+    coneMarch.cone = true;
+    coneMarch.epsilon = 2;
+    coneMarch.pixelAngle = ratio;
+    traceCameraRays(lanes_, coneMarch, cones_, coneResults_, stats.camera);
+    for (size_t i = 0; i < coneResults_.size(); ++i) {
+        const TraceResult& r = coneResults_[i];
+        stats.marchSteps += r.steps;
+        double& start = blockStart_[size_t(coneBlock_[i])];
+        if (r.end == TraceEnd::Miss && r.steps < march_.maxSteps) {
+            start = std::numeric_limits<double>::infinity();
+        } else {
+            // Start the block's rays at the cone's last point whose ball was clear: the set is
+            // not on them before it, and the point itself is outside, where normals are taken.
+            start = r.tOutside;
         }
     }
 }

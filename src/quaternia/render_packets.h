@@ -39,6 +39,11 @@ class PacketTileRenderer {
     void render(const Tile& tile, std::vector<PixelSamples>& pixels, PacketTileStats& stats);
 
   private:
+    // Cone marching (Amanatides 1984; as in demoscene "cone marching"): one cone per block of
+    // kConeBlock^2 pixels marched to where the set may be near, so that the pixels' own rays
+    // start there; blockStart_ gets that t, or infinity where the whole block misses.
+    static constexpr int kConeBlock = 4;
+    void marchCones(const Tile& tile, PacketTileStats& stats);
     void shadeHits(PacketTileStats& stats);
 
     LaneFractal lanes_;
@@ -47,6 +52,12 @@ class PacketTileRenderer {
     CameraMarch march_;
     int samples_;
     double boundingRadius_;
+
+    RayBatch cones_;
+    std::vector<TraceResult> coneResults_;
+    std::vector<int> coneBlock_;
+    std::vector<double> blockStart_;
+    std::vector<Ray> coneCentres_;
 
     // The batches of the current sample of the tile.
     RayBatch rays_;
