@@ -153,13 +153,14 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         stats.laneSlots += tileStats.camera.laneSlots + tileStats.shading.laneSlots;
         const int width = tile.x1 - tile.x0;
         std::vector<float>& linear = thread.display;
-        linear.clear();
+        linear.resize(thread.pixels.size() * 3);
+        float* next = linear.data();
         for (int py = tile.y0; py < tile.y1; ++py) {
-            for (int px = tile.x0; px < tile.x1; ++px) {
+            for (int px = tile.x0; px < tile.x1; ++px, next += 3) {
                 finishPixel(px, py, thread.pixels[size_t((py - tile.y0) * width + px - tile.x0)],
                             stats, false);
                 const Rgba& c = result.image.at(px, py);
-                linear.insert(linear.end(), {c.r, c.g, c.b});
+                next[0] = c.r, next[1] = c.g, next[2] = c.b;
             }
         }
         shader.toDisplay(linear.data(), linear.size());
