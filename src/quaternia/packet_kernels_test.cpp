@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <hwy/targets.h>
+
 #include <random>
+#include <string>
 
 #include "camera.h"
 #include "formula.h"
@@ -173,6 +176,31 @@ TEST(PacketKernels, CameraRaysEndWhereSphereTracingEnds) {
     EXPECT_GT(hits, 300);
     EXPECT_GT(counters.laneSlots, 0);
     EXPECT_LE(counters.laneIterations, counters.laneSlots);
+}
+
+// Every instruction set compiled in and supported here (e.g. SSE4, AVX2, AVX-512, and the
+// portable fallback) computes the same estimates: the runtime dispatch cannot pick a broken one.
+TEST(PacketKernels, EveryCompiledTargetAgrees) {
+    Fractal fractal = Fractal::fromScene(testing::referenceScene("case01_sqr_A"));
+    auto lanes = LaneFractal::from(fractal, Precision::Double);
+    PointBatch points = randomPoints(500, 1.6, 6);
+    std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+    EXPECT_GE(targets.size(), 2u);
+    for (int64_t target : targets) {
+        hwy::SetSupportedTargetsForTest(target);
+        EXPECT_EQ(std::string(laneTargetName()), hwy::TargetName(target));
+        std::vector<PointEstimate> estimates;
+        LaneCounters counters;
+        estimatePoints(*lanes, points, estimates, counters);
+        for (size_t i = 0; i < points.size(); ++i) {
+            DistanceEstimate reference =
+                fractal.estimate(Point3d(points.x[i], points.y[i], points.z[i]));
+            ASSERT_EQ(estimates[i].inside, reference.inside) << hwy::TargetName(target);
+            ASSERT_NEAR(estimates[i].distance, reference.distance, 1e-9 * (1 + reference.distance))
+                << hwy::TargetName(target);
+        }
+    }
+    hwy::SetSupportedTargetsForTest(0);  // back to what the CPU supports
 }
 
 }  // namespace
