@@ -117,6 +117,12 @@ bool writeImage(png_structp png, png_infop info, const EncodeJob& job, WriteSink
     png_set_write_fn(png, sink, writeCallback, flushCallback);
     png_set_IHDR(png, info, job.width, job.height, job.bitDepth, job.colorType, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    // Speed over the last few percent of size: zlib's level 1 with the Paeth filter is several
+    // times faster than the defaults (the whole adaptive filter search at level 6) and makes
+    // files about 10% larger on renders; encoding a 1080p frame otherwise costs a third of a
+    // render.
+    png_set_compression_level(png, 1);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_PAETH);
     png_write_info(png, info);
     png_write_image(png, job.rows);
     png_write_end(png, nullptr);
