@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "quaternia/lane_state.h"
 #include "quaternia/march.h"
@@ -200,6 +201,32 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
     }
 }
 
+// The estimates at the current points of the rays in the lanes (o + t d, through the slice):
+// live lanes, their t, and the estimates. False when no lane holds a ray.
+template <bool kQuadratic, size_t K, class D, class T>
+HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes<T>& s,
+                                  hn::Mask<D> (&live)[K], hn::Vec<D> (&t)[K],
+                                  LaneEstimate<D> (&e)[K], LaneCounters& counters) {
+    const size_t lanes = hn::Lanes(d);
+    QuaternionLanes<hn::Vec<D>> q[K];
+    bool anyLive = false;
+    for (size_t j = 0; j < K; ++j) {
+        const size_t o = j * lanes;
+        live[j] = hn::Load(d, s.live + o) > hn::Zero(d);
+        anyLive = anyLive || !hn::AllFalse(d, live[j]);
+        t[j] = hn::Load(d, s.t + o);
+        q[j] =
+            k.quaternionFromWorld(hn::MulAdd(hn::Load(d, s.dx + o), t[j], hn::Load(d, s.ox + o)),
+                                  hn::MulAdd(hn::Load(d, s.dy + o), t[j], hn::Load(d, s.oy + o)),
+                                  hn::MulAdd(hn::Load(d, s.dz + o), t[j], hn::Load(d, s.oz + o)));
+    }
+    if (!anyLive) return false;
+    estimateLanes<kQuadratic, false>(d, k, q, live, e, counters);
+    for (size_t j = 0; j < K; ++j)
+        counters.estimates += int64_t(hn::CountTrue(d, live[j]));
+    return true;
+}
+
 // sphereTrace (march.cpp) for a batch of camera rays, kLaneGroups vectors of rays at a time.
 template <bool kQuadratic, class D>
 void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
@@ -228,26 +255,12 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
     for (;;) {
         M live[K];
         V t[K];
-        QuaternionLanes<V> q[K];
-        bool anyLive = false;
-        for (size_t j = 0; j < K; ++j) {
-            const size_t o = j * lanes;
-            live[j] = hn::Load(d, s.live + o) > zero;
-            anyLive = anyLive || !hn::AllFalse(d, live[j]);
-            t[j] = hn::Load(d, s.t + o);
-            q[j] = k.quaternionFromWorld(
-                hn::MulAdd(hn::Load(d, s.dx + o), t[j], hn::Load(d, s.ox + o)),
-                hn::MulAdd(hn::Load(d, s.dy + o), t[j], hn::Load(d, s.oy + o)),
-                hn::MulAdd(hn::Load(d, s.dz + o), t[j], hn::Load(d, s.oz + o)));
-        }
-        if (!anyLive) break;
         LaneEstimate<D> e[K];
-        estimateLanes<kQuadratic, false>(d, k, q, live, e, counters);
+        if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) break;
 
         bool anyDone = false;
         for (size_t j = 0; j < K; ++j) {
             const size_t o = j * lanes;
-            counters.estimates += int64_t(hn::CountTrue(d, live[j]));
             const V footprint = pixelAngle * t[j];
             V confirming = hn::IfThenElseZero(e[j].distance < epsilon * footprint,
                                               hn::Load(d, s.confirming + o) + one);
@@ -320,26 +333,12 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
     for (;;) {
         M live[K];
         V t[K];
-        QuaternionLanes<V> q[K];
-        bool anyLive = false;
-        for (size_t j = 0; j < K; ++j) {
-            const size_t o = j * lanes;
-            live[j] = hn::Load(d, s.live + o) > zero;
-            anyLive = anyLive || !hn::AllFalse(d, live[j]);
-            t[j] = hn::Load(d, s.t + o);
-            q[j] = k.quaternionFromWorld(
-                hn::MulAdd(hn::Load(d, s.dx + o), t[j], hn::Load(d, s.ox + o)),
-                hn::MulAdd(hn::Load(d, s.dy + o), t[j], hn::Load(d, s.oy + o)),
-                hn::MulAdd(hn::Load(d, s.dz + o), t[j], hn::Load(d, s.oz + o)));
-        }
-        if (!anyLive) break;
         LaneEstimate<D> e[K];
-        estimateLanes<kQuadratic, false>(d, k, q, live, e, counters);
+        if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) break;
 
         bool anyDone = false;
         for (size_t j = 0; j < K; ++j) {
             const size_t o = j * lanes;
-            counters.estimates += int64_t(hn::CountTrue(d, live[j]));
             auto blocked = hn::And(live[j], hn::Or(e[j].inside, e[j].distance < blockDistance));
             // The penumbra: how nearly the ray grazed the set relative to how far it went.
             V open = hn::Load(d, s.confirming + o);  // the running visibility of this ray
@@ -471,66 +470,48 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
     }
 }
 
-// Each kernel in both precisions and both forms, chosen at run time.
-template <template <bool, class> class Kernel, class... Args>
-void run(const LaneFractal& fractal, Args&&... args) {
-    const bool quadratic = fractal.degree == 2;
+// Calls kernel(d, quadratic) with the fractal's precision as the lane tag and its form as a
+// std::bool_constant: each kernel in both precisions and both forms, chosen at run time.
+template <class Kernel>
+void run(const LaneFractal& fractal, const Kernel& kernel) {
+    auto withForm = [&](auto d) {
+        if (fractal.degree == 2) {
+            kernel(d, std::true_type{});
+        } else {
+            kernel(d, std::false_type{});
+        }
+    };
     if (fractal.precision == Precision::Double) {
-        const hn::ScalableTag<double> d;
-        quadratic ? Kernel<true, decltype(d)>::run(d, fractal, args...)
-                  : Kernel<false, decltype(d)>::run(d, fractal, args...);
+        withForm(hn::ScalableTag<double>());
     } else {
-        const hn::ScalableTag<float> d;
-        quadratic ? Kernel<true, decltype(d)>::run(d, fractal, args...)
-                  : Kernel<false, decltype(d)>::run(d, fractal, args...);
+        withForm(hn::ScalableTag<float>());
     }
 }
-
-template <bool kQuadratic, class D>
-struct CameraKernel {
-    template <class... Args>
-    static void run(D d, const LaneFractal& f, Args&... args) {
-        traceCameraLanes<kQuadratic>(d, f, args...);
-    }
-};
-template <bool kQuadratic, class D>
-struct ShadowKernel {
-    template <class... Args>
-    static void run(D d, const LaneFractal& f, Args&... args) {
-        traceShadowLanes<kQuadratic>(d, f, args...);
-    }
-};
-template <bool kQuadratic, class D>
-struct EstimateKernel {
-    template <class... Args>
-    static void run(D d, const LaneFractal& f, Args&... args) {
-        estimatePointLanes<kQuadratic>(d, f, args...);
-    }
-};
-template <bool kQuadratic, class D>
-struct NormalKernel {
-    template <class... Args>
-    static void run(D d, const LaneFractal& f, Args&... args) {
-        potentialNormalLanes<kQuadratic>(d, f, args...);
-    }
-};
 
 void TraceCameraRays(const LaneFractal& fractal, const CameraMarch& march, const RayBatch& rays,
                      std::vector<TraceResult>& results, LaneCounters& counters) {
-    run<CameraKernel>(fractal, march, rays, results, counters);
+    run(fractal, [&](auto d, auto quadratic) {
+        traceCameraLanes<quadratic()>(d, fractal, march, rays, results, counters);
+    });
 }
 void TraceShadowRays(const LaneFractal& fractal, const ShadowMarch& march, const RayBatch& rays,
                      std::vector<double>& visibility, LaneCounters& counters) {
-    run<ShadowKernel>(fractal, march, rays, visibility, counters);
+    run(fractal, [&](auto d, auto quadratic) {
+        traceShadowLanes<quadratic()>(d, fractal, march, rays, visibility, counters);
+    });
 }
 void EstimatePoints(const LaneFractal& fractal, const PointBatch& points,
                     std::vector<PointEstimate>& results, LaneCounters& counters) {
-    run<EstimateKernel>(fractal, points, results, counters);
+    run(fractal, [&](auto d, auto quadratic) {
+        estimatePointLanes<quadratic()>(d, fractal, points, results, counters);
+    });
 }
 void PotentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       const std::vector<int>& iterations, std::vector<Vector3d>& normals,
                       LaneCounters& counters) {
-    run<NormalKernel>(fractal, points, iterations, normals, counters);
+    run(fractal, [&](auto d, auto quadratic) {
+        potentialNormalLanes<quadratic()>(d, fractal, points, iterations, normals, counters);
+    });
 }
 void EncodeDisplay(float* values, size_t count, float exposure, float inverseGamma) {
     const hn::ScalableTag<float> d;
