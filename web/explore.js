@@ -64,36 +64,48 @@ async function errorText(response) {
 
 let generation = 0;       // bumped by every change of the view
 let lastChange = 0;
-let inflight = null;      // AbortController of the running request
+let inflight = null;      // { controller, level } of the running request
 let framePending = false;
-const timing = { started: performance.now(), firstFrameMs: null, frames: [] };
+const timing = { started: performance.now(), firstFrameMs: null, firstRenderMs: null, frames: [] };
 window.exploreTiming = timing;
 
+// While the mouse moves, a quarter-resolution request in flight is let finish (it takes a few
+// tens of milliseconds) and its completion asks for the newest view, so frames keep coming;
+// a refinement in flight is stale at once and is aborted (the server cancels it when the next
+// request of this tab arrives).
 function viewChanged() {
   ++generation;
   lastChange = performance.now();
   document.body.dataset.state = 'rendering';
+  if (inflight && inflight.level === 0) return;
   // At most one new request per animation frame, however fast the mouse moves.
   if (framePending) return;
   framePending = true;
-  requestAnimationFrame(() => { framePending = false; requestLevel(0); });
+  requestAnimationFrame(() => {
+    framePending = false;
+    if (!(inflight && inflight.level === 0)) requestLevel(0);
+  });
 }
 
 async function requestLevel(level) {
   const myGeneration = generation;
   const list = levels();
-  if (inflight) inflight.abort();
-  const controller = (inflight = new AbortController());
-  let response;
+  if (inflight) inflight.controller.abort();
+  const request = (inflight = { controller: new AbortController(), level });
+  let response, blob;
   try {
-    response = await fetch('/api/render?' + viewQuery(list[level]), { signal: controller.signal });
+    response = await fetch('/api/render?' + viewQuery(list[level]),
+                           { signal: request.controller.signal });
+    if (response.status === 200) blob = await response.blob();
   } catch {
     return;  // aborted by a newer view
   }
-  if (myGeneration !== generation) return;
-  if (response.status === 204) return;  // cancelled on the server by a newer request
-  if (response.status === 429) {
-    setTimeout(() => myGeneration === generation && requestLevel(level), 200);
+  if (inflight === request) inflight = null;
+  const stale = myGeneration !== generation;
+  if (stale && level > 0) return;
+  if (response.status === 204 || response.status === 429) {
+    // Cancelled on the server by a newer request, or too many: ask again for the newest view.
+    setTimeout(() => !inflight && requestLevel(0), response.status === 429 ? 200 : 0);
     return;
   }
   if (!response.ok) {
@@ -102,10 +114,12 @@ async function requestLevel(level) {
     document.body.dataset.state = 'error';
     return;
   }
-  const blob = await response.blob();
-  if (myGeneration !== generation) return;
   markInvalid(controls, null);
   await show(blob, list[level], response.headers.get('X-Render-Ms'));
+  if (stale) {  // a frame of a view just left: shown, now the newest view
+    if (!inflight) requestLevel(0);
+    return;
+  }
   const last = level + 1 === list.length;
   document.body.dataset.state = last ? 'final' : 'refining';
   view.dataset.level = level;
@@ -124,6 +138,8 @@ async function show(blob, level, renderMs) {
   if (timing.firstFrameMs === null) {
     timing.firstFrameMs = now - timing.started;  // from this script's start
     timing.firstFrameSinceNavigationMs = now;   // performance.now() counts from navigation
+    timing.firstRenderMs = +renderMs;            // the server's render time of that frame
+    loadMap();  // after the first frame, so that the two do not share the cores
   }
   timing.frames.push(now);
   view.dataset.frames = timing.frames.length;
@@ -285,6 +301,10 @@ function changed(name) {
 }
 
 async function main() {
+  // The starting view needs no table (it changes no key): its first frame is asked for at once,
+  // alongside the table.
+  lastChange = performance.now();
+  requestLevel(0);
   table = await (await fetch('/api/parameters')).json();
   for (const parameter of table) {
     start[parameter.name] = parameter.value;
@@ -292,7 +312,6 @@ async function main() {
   }
   refreshControls = buildControls(controls, table, state, changed);
   buildPresets();
-  viewChanged();
-  loadMap();
+  if (document.body.dataset.state === 'final') requestLevel(levels().length - 1);  // samples
 }
 main();
