@@ -120,9 +120,10 @@ async function requestLevel(level) {
     if (!inflight) requestLevel(0);
     return;
   }
+  view.dataset.level = level;
+  if (!table.length) return;  // main() refines once it knows the scene's samples
   const last = level + 1 === list.length;
   document.body.dataset.state = last ? 'final' : 'refining';
-  view.dataset.level = level;
   if (last) return;
   const wait = Math.max(0, lastChange + STILL_MS - performance.now());
   setTimeout(() => myGeneration === generation && requestLevel(level + 1), wait);
@@ -312,6 +313,7 @@ async function main() {
   }
   refreshControls = buildControls(controls, table, state, changed);
   buildPresets();
-  if (document.body.dataset.state === 'final') requestLevel(levels().length - 1);  // samples
+  drawMap();  // c, before the map's image arrives
+  if (!inflight && view.dataset.level !== undefined) requestLevel(+view.dataset.level + 1);
 }
 main();
