@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian 12 checkout to every test: installs the packages, builds and
 # runs the GoogleTest suite in Release, then again under AddressSanitizer and
-# UndefinedBehaviorSanitizer. Also builds the benchmarks, so that they cannot rot.
+# UndefinedBehaviorSanitizer. Also builds the benchmarks, so that they cannot rot. The Release
+# tests include the explorer in headless chromium (tests/browser).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/install-deps.sh
 jobs=$(nproc)
+# playwright-core for the browser test, exactly as locked; it never downloads a browser (the
+# test runs Debian's chromium).
+if [ ! -d tests/browser/node_modules/playwright-core ]; then
+  (cd tests/browser && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --silent --no-audit --no-fund)
+fi
 
 echo "== Release build and tests"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DQUATERNIA_BUILD_TESTS=ON \

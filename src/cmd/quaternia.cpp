@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cycles_command.h"
+#include "explore_command.h"
 #include "mesh_command.h"
 #include "orbit_command.h"
 #include "plane_command.h"
@@ -23,7 +24,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "quaternia 0.1.0");
     app.footer(
         "Run `quaternia COMMAND --help` for a command's options (render, plane, mesh, orbit, "
-        "cycles).\n\nScene "
+        "cycles, explore).\n\nScene "
         "keys (scene file "
         "sections, or --set section.key=value):\n" +
         parameterHelp());
@@ -37,6 +38,8 @@ int main(int argc, char** argv) {
     addPlaneCommand(app, planeOptions);
     MeshCommandOptions meshOptions;
     addMeshCommand(app, meshOptions);
+    ExploreCommandOptions exploreOptions;
+    addExploreCommand(app, exploreOptions);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -55,6 +58,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("cycles")) return runCyclesCommand(cyclesOptions);
         if (app.got_subcommand("plane")) return runPlaneCommand(planeOptions);
         if (app.got_subcommand("mesh")) return runMeshCommand(meshOptions);
+        if (app.got_subcommand("explore")) return runExploreCommand(exploreOptions);
     } catch (const UserError& e) {
         std::fprintf(stderr, "quaternia: error: %s\n", e.what());
         return 2;

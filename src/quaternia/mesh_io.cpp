@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cstring>
+#include <functional>
 #include <vector>
 
 #include "util/error.h"
@@ -12,11 +13,14 @@
 namespace quaternia {
 namespace {
 
-// Appends to a buffer and hands it to the file a megabyte at a time, so that a mesh of tens of
-// millions of triangles is never held twice in memory.
+// Appends to a buffer and hands it to the sink (a file) a megabyte at a time, so that a mesh of
+// tens of millions of triangles is never held twice in memory.
 class BufferedWriter {
   public:
-    explicit BufferedWriter(AtomicFile& file) : file_(file) { buffer_.reserve(kFlushSize + 256); }
+    using Sink = std::function<void(const uint8_t* data, std::size_t size)>;
+    explicit BufferedWriter(Sink sink) : sink_(std::move(sink)) {
+        buffer_.reserve(kFlushSize + 256);
+    }
 
     void bytes(const void* data, std::size_t size) {
         const auto* p = static_cast<const uint8_t*>(data);
@@ -54,13 +58,13 @@ class BufferedWriter {
         bytes(&separator, 1);
     }
     void flush() {
-        file_.write(buffer_.data(), buffer_.size());
+        sink_(buffer_.data(), buffer_.size());
         buffer_.clear();
     }
 
   private:
     static constexpr std::size_t kFlushSize = 1 << 20;
-    AtomicFile& file_;
+    Sink sink_;
     std::vector<uint8_t> buffer_;
 };
 
@@ -166,8 +170,7 @@ const char* meshFormatName(MeshFormat format) {
     }
 }
 
-void writeMesh(const Mesh& mesh, MeshFormat format, AtomicFile& file) {
-    BufferedWriter out(file);
+static void writeMeshTo(const Mesh& mesh, MeshFormat format, BufferedWriter& out) {
     switch (format) {
         case MeshFormat::Stl:
             writeStl(mesh, out);
@@ -180,6 +183,20 @@ void writeMesh(const Mesh& mesh, MeshFormat format, AtomicFile& file) {
             break;
     }
     out.flush();
+}
+
+void writeMesh(const Mesh& mesh, MeshFormat format, AtomicFile& file) {
+    BufferedWriter out([&](const uint8_t* data, std::size_t size) { file.write(data, size); });
+    writeMeshTo(mesh, format, out);
+}
+
+std::vector<uint8_t> encodeMesh(const Mesh& mesh, MeshFormat format) {
+    std::vector<uint8_t> bytes;
+    BufferedWriter out([&](const uint8_t* data, std::size_t size) {
+        bytes.insert(bytes.end(), data, data + size);
+    });
+    writeMeshTo(mesh, format, out);
+    return bytes;
 }
 
 }  // namespace quaternia

@@ -4,7 +4,9 @@
 // so a file is whole or absent.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "mesh.h"
 #include "util/atomic_file.h"
@@ -21,5 +23,7 @@ const char* meshFormatName(MeshFormat format);  // "stl", "ply", "obj"
 // Writes the whole mesh to `file` (which the caller commits). Normals and colours are written
 // where the format has room for them and the mesh has them.
 void writeMesh(const Mesh& mesh, MeshFormat format, AtomicFile& file);
+// The same bytes in memory (for the explorer's mesh download).
+std::vector<uint8_t> encodeMesh(const Mesh& mesh, MeshFormat format);
 
 }  // namespace quaternia

@@ -1,0 +1,157 @@
+// The controls, generated from the server's parameter table (GET /api/parameters): a slider
+// and a number box per real, integer or vector component, a menu per choice, a text box per
+// text. Ranges and help come from the table; where a table range is far wider than is useful to
+// drag through (camera position: +-10000), the slider gets a narrower one and the number box
+// still takes anything the table allows.
+
+// Sections and keys the page sets itself (image size, output format) or that belong to other
+// commands (plane images, meshes).
+const HIDDEN_SECTIONS = new Set(['plane', 'mesh']);
+const HIDDEN_KEYS = new Set(['render.width', 'render.height', 'render.bit_depth', 'camera.up']);
+
+const SLIDER_RANGES = {
+  'fractal.c': [-1.5, 1.5], 'fractal.max_iterations': [1, 64], 'fractal.bailout': [0, 16],
+  'slice.normal': [-1, 1], 'slice.distance': [-1.5, 1.5], 'slice.left': [-1, 1],
+  'slice.right': [-1, 1], 'slice.angles': [-180, 180], 'camera.position': [-10, 10],
+  'camera.look_at': [-2, 2], 'camera.fov': [5, 120], 'render.samples': [1, 16],
+  'render.step': [0.0005, 0.02], 'render.epsilon': [0.05, 2], 'render.max_steps': [100, 20000],
+  'shading.light_direction': [-1, 1], 'shading.fill_direction': [-1, 1],
+  'shading.shadow_softness': [1, 64], 'shading.specular': [0, 2], 'shading.shininess': [1, 200],
+  'shading.gamma': [0.5, 4], 'shading.exposure': [0, 4],
+};
+const COMPONENT_NAMES = {
+  'fractal.c': ['1', 'i', 'j', 'k'], 'slice.left': ['1', 'i', 'j', 'k'],
+  'slice.right': ['1', 'i', 'j', 'k'], 'slice.normal': ['x', 'y', 'z', 'w'],
+  'slice.angles': ['1i', '1j', '1k', 'ij', 'ik', 'jk'],
+};
+const VECTOR_LENGTHS = { vector2: 2, vector3: 3, vector4: 4, vector6: 6 };
+
+// A value in TOML syntax, as the server reads query parameters.
+export function tomlValue(value) {
+  if (Array.isArray(value)) return '[' + value.map(String).join(', ') + ']';
+  if (typeof value === 'string') return JSON.stringify(value);
+  return String(value);
+}
+
+export function sameValue(a, b) {
+  return JSON.stringify(a) === JSON.stringify(b);
+}
+
+// An id usable in CSS selectors: "fractal.c", 0 -> "ctl-fractal_c-0".
+export function controlId(name, component = 0) {
+  return 'ctl-' + name.replace('.', '_') + '-' + component;
+}
+
+function sliderRange(parameter) {
+  const range = SLIDER_RANGES[parameter.name];
+  if (range) return range;
+  if (parameter.name.endsWith('_color') || parameter.name.startsWith('shading.background'))
+    return [0, 1];
+  return [parameter.minimum, parameter.maximum];
+}
+
+function componentNames(parameter, count) {
+  if (COMPONENT_NAMES[parameter.name]) return COMPONENT_NAMES[parameter.name];
+  if (parameter.name.includes('color') || parameter.name.includes('background'))
+    return ['r', 'g', 'b'];
+  return ['x', 'y', 'z', 'w', 'u', 'v'].slice(0, count);
+}
+
+// One slider + number pair; `onValue(number)` on every change.
+function numberWidget(parameter, id, label, initial, onValue) {
+  const row = document.createElement('div');
+  row.className = 'component';
+  const [low, high] = sliderRange(parameter);
+  const integer = parameter.type === 'integer';
+  const step = integer ? 1 : (high - low) / 1000;
+  const slider = Object.assign(document.createElement('input'),
+    { type: 'range', min: low, max: high, step, value: initial, id, title: parameter.help });
+  const box = Object.assign(document.createElement('input'),
+    { type: 'number', min: parameter.minimum, max: parameter.maximum, step: integer ? 1 : 'any',
+      value: initial, title: parameter.help });
+  box.id = id + '-number';
+  const tag = document.createElement('span');
+  tag.textContent = label;
+  // Slider steps are (high - low) / 1000; rounding to 6 decimals keeps CLI commands short.
+  slider.addEventListener('input', () => {
+    const v = integer ? Math.round(+slider.value) : +(+slider.value).toFixed(6);
+    box.value = v;
+    onValue(v);
+  });
+  box.addEventListener('change', () => {
+    if (box.value === '' || !Number.isFinite(+box.value)) return;
+    slider.value = box.value;
+    onValue(+box.value);
+  });
+  row.append(tag, slider, box);
+  const update = (v) => { slider.value = v; box.value = v; };
+  return { row, update };
+}
+
+// Builds every control into `container`. `state` maps names to values and is changed in place;
+// `onChange(name)` follows each change. Returns refresh(), which shows the state's values again
+// (after a drag, a map click or a preset changed them).
+export function buildControls(container, table, state, onChange) {
+  const updaters = [];
+  let details = null, section = '';
+  for (const parameter of table) {
+    const name = parameter.name;
+    if (HIDDEN_SECTIONS.has(parameter.section) || HIDDEN_KEYS.has(name)) continue;
+    if (parameter.section !== section) {
+      section = parameter.section;
+      details = document.createElement('details');
+      details.open = section === 'fractal' || section === 'slice';
+      details.innerHTML = `<summary>${section}</summary>`;
+      container.append(details);
+    }
+    const control = document.createElement('div');
+    control.className = 'control';
+    control.dataset.name = name;
+    const label = document.createElement('label');
+    label.textContent = parameter.key.replaceAll('_', ' ');
+    label.title = parameter.help;
+    control.append(label);
+    const count = VECTOR_LENGTHS[parameter.type];
+    if (count) {
+      const names = componentNames(parameter, count);
+      for (let i = 0; i < count; ++i) {
+        const widget = numberWidget(parameter, controlId(name, i), names[i], state[name][i], (v) => {
+          state[name] = state[name].slice();
+          state[name][i] = v;
+          onChange(name);
+        });
+        control.append(widget.row);
+        updaters.push(() => widget.update(state[name][i]));
+      }
+    } else if (parameter.type === 'real' || parameter.type === 'integer') {
+      const widget = numberWidget(parameter, controlId(name), '', state[name], (v) => {
+        state[name] = v;
+        onChange(name);
+      });
+      control.append(widget.row);
+      updaters.push(() => widget.update(state[name]));
+    } else if (parameter.type === 'choice') {
+      const select = Object.assign(document.createElement('select'),
+        { id: controlId(name), title: parameter.help });
+      for (const choice of parameter.choices) select.add(new Option(choice, choice));
+      select.value = state[name];
+      select.addEventListener('change', () => { state[name] = select.value; onChange(name); });
+      control.append(select);
+      updaters.push(() => { select.value = state[name]; });
+    } else {
+      const input = Object.assign(document.createElement('input'),
+        { type: 'text', id: controlId(name), value: state[name], title: parameter.help });
+      input.addEventListener('change', () => { state[name] = input.value; onChange(name); });
+      control.append(input);
+      updaters.push(() => { input.value = state[name]; });
+    }
+    details.append(control);
+  }
+  return () => updaters.forEach((update) => update());
+}
+
+// Marks the control of `name` (or none) as the one the server refused.
+export function markInvalid(container, name) {
+  for (const control of container.querySelectorAll('.control'))
+    control.classList.toggle('invalid', control.dataset.name === name);
+}

@@ -1,0 +1,319 @@
+// The explorer page: a progressive view of the scene (a quarter-resolution frame at once, then
+// finer ones while the view is still), orbit and zoom with the mouse, the Mandelbrot map that
+// picks c, presets, and the exports. Every request names this tab's client id, so the server
+// cancels the tab's stale render as soon as a newer view is asked for.
+import { buildControls, markInvalid, sameValue, tomlValue } from './controls.js';
+
+const clientId = 'tab-' + Math.random().toString(36).slice(2, 12);
+const view = document.getElementById('view');
+const viewport = document.getElementById('viewport');
+const statusLine = document.getElementById('status');
+const controls = document.getElementById('controls');
+const copied = document.getElementById('copied');
+
+// ?size=WxH fixes the final image size (benchmarks, tests); otherwise it fits the window.
+const fixedSize = /^(\d+)x(\d+)$/.exec(new URLSearchParams(location.search).get('size') || '');
+const STILL_MS = 120;  // the view counts as still after this long without a change
+
+let table = [];
+const start = {};  // name -> the starting scene's value
+const state = {};  // name -> current value
+let refreshControls = () => {};
+
+// ---- Requests ---------------------------------------------------------------------------------
+
+// The query for the current view: every key whose value differs from the starting scene.
+function viewQuery(extra = {}) {
+  const query = new URLSearchParams({ client: clientId });
+  for (const { name } of table)
+    if (!sameValue(state[name], start[name])) query.set(name, tomlValue(state[name]));
+  for (const [name, value] of Object.entries(extra)) query.set(name, tomlValue(value));
+  return query.toString();
+}
+
+function finalSize() {
+  if (fixedSize) return [+fixedSize[1], +fixedSize[2]];
+  const scale = Math.min(1, 1920 / viewport.clientWidth, 1080 / viewport.clientHeight);
+  return [Math.max(16, Math.round(viewport.clientWidth * scale)),
+          Math.max(16, Math.round(viewport.clientHeight * scale))];
+}
+
+// Refinement levels: a quarter of the size with one sample, a half, full, then the samples the
+// scene asks for.
+function levels() {
+  const [width, height] = finalSize();
+  const size = (d) => ({ 'render.width': Math.max(1, Math.round(width / d)),
+                         'render.height': Math.max(1, Math.round(height / d)) });
+  const list = [{ ...size(4), 'render.samples': 1 }, { ...size(2), 'render.samples': 1 },
+                { ...size(1), 'render.samples': 1 }];
+  if (state['render.samples'] > 1) list.push({ ...size(1), 'render.samples': state['render.samples'] });
+  return list;
+}
+
+async function errorText(response) {
+  try {
+    const body = await response.json();
+    markInvalid(controls, body.key);
+    return `${body.key ? body.key + ': ' : ''}${body.error}`;
+  } catch {
+    return `HTTP ${response.status}`;
+  }
+}
+
+// ---- Progressive view -------------------------------------------------------------------------
+
+let generation = 0;       // bumped by every change of the view
+let lastChange = 0;
+let inflight = null;      // { controller, level } of the running request
+let framePending = false;
+const timing = { started: performance.now(), firstFrameMs: null, firstRenderMs: null, frames: [] };
+window.exploreTiming = timing;
+
+// While the mouse moves, a quarter-resolution request in flight is let finish (it takes a few
+// tens of milliseconds) and its completion asks for the newest view, so frames keep coming;
+// a refinement in flight is stale at once and is aborted (the server cancels it when the next
+// request of this tab arrives).
+function viewChanged() {
+  ++generation;
+  lastChange = performance.now();
+  document.body.dataset.state = 'rendering';
+  if (inflight && inflight.level === 0) return;
+  // At most one new request per animation frame, however fast the mouse moves.
+  if (framePending) return;
+  framePending = true;
+  requestAnimationFrame(() => {
+    framePending = false;
+    if (!(inflight && inflight.level === 0)) requestLevel(0);
+  });
+}
+
+async function requestLevel(level) {
+  const myGeneration = generation;
+  const list = levels();
+  if (inflight) inflight.controller.abort();
+  const request = (inflight = { controller: new AbortController(), level });
+  let response, blob;
+  try {
+    response = await fetch('/api/render?' + viewQuery(list[level]),
+                           { signal: request.controller.signal });
+    if (response.status === 200) blob = await response.blob();
+  } catch {
+    return;  // aborted by a newer view
+  }
+  if (inflight === request) inflight = null;
+  const stale = myGeneration !== generation;
+  if (stale && level > 0) return;
+  if (response.status === 204 || response.status === 429) {
+    // Cancelled on the server by a newer request, or too many: ask again for the newest view.
+    setTimeout(() => !inflight && requestLevel(0), response.status === 429 ? 200 : 0);
+    return;
+  }
+  if (!response.ok) {
+    statusLine.textContent = await errorText(response);
+    statusLine.className = 'error';
+    document.body.dataset.state = 'error';
+    return;
+  }
+  markInvalid(controls, null);
+  await show(blob, list[level], response.headers.get('X-Render-Ms'));
+  if (stale) {  // a frame of a view just left: shown, now the newest view
+    if (!inflight) requestLevel(0);
+    return;
+  }
+  view.dataset.level = level;
+  if (!table.length) return;  // main() refines once it knows the scene's samples
+  const last = level + 1 === list.length;
+  document.body.dataset.state = last ? 'final' : 'refining';
+  if (last) return;
+  const wait = Math.max(0, lastChange + STILL_MS - performance.now());
+  setTimeout(() => myGeneration === generation && requestLevel(level + 1), wait);
+}
+
+async function show(blob, level, renderMs) {
+  const url = URL.createObjectURL(blob);
+  const previous = view.src;
+  view.src = url;
+  await view.decode().catch(() => {});
+  if (previous.startsWith('blob:')) URL.revokeObjectURL(previous);
+  const now = performance.now();
+  if (timing.firstFrameMs === null) {
+    timing.firstFrameMs = now - timing.started;  // from this script's start
+    timing.firstFrameSinceNavigationMs = now;   // performance.now() counts from navigation
+    timing.firstRenderMs = +renderMs;            // the server's render time of that frame
+    loadMap();  // after the first frame, so that the two do not share the cores
+  }
+  timing.frames.push(now);
+  view.dataset.frames = timing.frames.length;
+  statusLine.className = '';
+  statusLine.textContent = `${level['render.width']}x${level['render.height']}, ` +
+    `${level['render.samples']} spp, ${Math.round(+renderMs)} ms`;
+}
+
+// ---- Orbit and zoom ---------------------------------------------------------------------------
+
+function orbit(dYaw, dPitch, zoom) {
+  const at = state['camera.look_at'];
+  const offset = state['camera.position'].map((p, i) => p - at[i]);
+  let radius = Math.hypot(...offset);
+  let yaw = Math.atan2(offset[0], offset[2]);
+  let pitch = Math.asin(offset[1] / radius);
+  yaw += dYaw;
+  pitch = Math.max(-1.45, Math.min(1.45, pitch + dPitch));  // never along camera.up
+  radius = Math.max(0.3, Math.min(1000, radius * zoom));
+  const round = (v) => +v.toFixed(6);
+  state['camera.position'] = [at[0] + radius * Math.cos(pitch) * Math.sin(yaw),
+                              at[1] + radius * Math.sin(pitch),
+                              at[2] + radius * Math.cos(pitch) * Math.cos(yaw)].map(round);
+  refreshControls();
+  viewChanged();
+}
+
+let drag = null;
+viewport.addEventListener('pointerdown', (e) => {
+  drag = { x: e.clientX, y: e.clientY };
+  viewport.setPointerCapture(e.pointerId);
+  viewport.classList.add('dragging');
+});
+viewport.addEventListener('pointermove', (e) => {
+  if (!drag) return;
+  const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
+  drag = { x: e.clientX, y: e.clientY };
+  orbit(-dx * 0.008, dy * 0.008, 1);
+});
+const endDrag = () => { drag = null; viewport.classList.remove('dragging'); };
+viewport.addEventListener('pointerup', endDrag);
+viewport.addEventListener('pointercancel', endDrag);
+viewport.addEventListener('wheel', (e) => {
+  e.preventDefault();
+  orbit(0, 0, Math.exp(e.deltaY * 0.001));
+}, { passive: false });
+window.addEventListener('resize', () => fixedSize || viewChanged());
+
+// ---- Mandelbrot map ---------------------------------------------------------------------------
+
+const map = document.getElementById('map');
+const MAP_VIEW = { center: [-0.6, 0], width: 3.2 };
+let mapImage = null, mapFormula = null;
+
+function mapPoint(x, y) {  // canvas pixels -> c = re + im i, as plane_view.h maps them
+  const scale = MAP_VIEW.width / map.width;
+  return [MAP_VIEW.center[0] + (x - map.width / 2) * scale,
+          MAP_VIEW.center[1] + (map.height / 2 - y) * scale];
+}
+
+async function loadMap() {
+  mapFormula = state['fractal.formula'];
+  const query = new URLSearchParams({ client: clientId });
+  const settings = { 'fractal.formula': mapFormula, 'render.width': map.width,
+    'render.height': map.height, 'render.samples': 2, 'plane.center': MAP_VIEW.center,
+    'plane.width': MAP_VIEW.width, 'plane.max_iterations': 200 };
+  for (const [name, value] of Object.entries(settings)) query.set(name, tomlValue(value));
+  const response = await fetch('/api/mandelbrot?' + query);
+  if (response.status !== 200) return;
+  mapImage = await createImageBitmap(await response.blob());
+  drawMap();
+}
+
+function drawMap() {
+  const context = map.getContext('2d');
+  if (mapImage) context.drawImage(mapImage, 0, 0);
+  const c = state['fractal.c'];
+  const scale = MAP_VIEW.width / map.width;
+  const x = map.width / 2 + (c[0] - MAP_VIEW.center[0]) / scale;
+  const y = map.height / 2 - (c[1] - MAP_VIEW.center[1]) / scale;
+  context.strokeStyle = '#fff';
+  context.beginPath();
+  context.arc(x, y, 4, 0, 2 * Math.PI);
+  context.stroke();
+  const text = c.map((v) => +v.toFixed(6));
+  document.getElementById('c-value').textContent =
+    `c = ${text[0]} + ${text[1]}i + ${text[2]}j + ${text[3]}k`;
+  document.body.dataset.c = JSON.stringify(c);
+}
+
+map.addEventListener('click', (e) => {
+  const rect = map.getBoundingClientRect();
+  const [re, im] = mapPoint((e.clientX - rect.left) * map.width / rect.width,
+                            (e.clientY - rect.top) * map.height / rect.height);
+  state['fractal.c'] = [+re.toFixed(6), +im.toFixed(6), 0, 0];
+  changed('fractal.c');
+});
+
+// ---- Presets and exports ----------------------------------------------------------------------
+
+const PRESETS = [
+  ['Start', null],
+  ['Rabbit', { 'fractal.formula': 'z^2 + c', 'fractal.c': [-0.122561, 0.744862, 0, 0] }],
+  ['Dendrite', { 'fractal.formula': 'z^2 + c', 'fractal.c': [0, 1, 0, 0] }],
+  ['Basilica', { 'fractal.formula': 'z^2 + c', 'fractal.c': [-1, 0, 0, 0] }],
+  ['4D blob', { 'fractal.formula': 'z^2 + c', 'fractal.c': [-0.2, 0.4, -0.4, -0.4] }],
+  ['Cubic', { 'fractal.formula': 'z^3 + c', 'fractal.c': [-0.5, 0.5, 0, 0] }],
+  ['Two-sided', { 'fractal.formula': '(1+2i) z (0.5-k) z + c', 'fractal.c': [-0.2, 0.6, 0.2, 0.2] }],
+];
+
+function buildPresets() {
+  const container = document.getElementById('presets');
+  for (const [label, values] of PRESETS) {
+    const button = Object.assign(document.createElement('button'), { type: 'button', textContent: label });
+    button.addEventListener('click', () => {
+      const preset = values || { 'fractal.formula': start['fractal.formula'], 'fractal.c': start['fractal.c'] };
+      Object.assign(state, structuredClone(preset));
+      changed('fractal.formula');
+    });
+    container.append(button);
+  }
+}
+
+// The exact final view: the size and samples the page refines to.
+function exactQuery() {
+  return viewQuery(levels().at(-1));
+}
+
+async function copyText(route, attribute) {
+  const response = await fetch(`/api/${route}?` + exactQuery());
+  const text = response.ok ? (await response.text()).trim() : await errorText(response);
+  copied.value = text;
+  document.body.dataset[attribute] = text;
+  try { await navigator.clipboard.writeText(text); } catch { /* no clipboard: the box has it */ }
+}
+
+function downloadFrom(url) {
+  const link = Object.assign(document.createElement('a'), { href: url, download: '' });
+  document.body.append(link);
+  link.click();
+  link.remove();
+}
+
+document.getElementById('copy-scene').addEventListener('click', () => copyText('scene', 'scene'));
+document.getElementById('copy-cli').addEventListener('click', () => copyText('command', 'cli'));
+document.getElementById('download').addEventListener('click', () => downloadFrom('/api/download?' +
+  viewQuery({ 'render.width': start['render.width'], 'render.height': start['render.height'],
+              'render.samples': state['render.samples'] })));
+document.getElementById('export-mesh').addEventListener('click', () => downloadFrom('/api/mesh?' +
+  viewQuery({ 'mesh.resolution': Math.min(256, state['mesh.resolution']) })));
+
+// ---- Start ------------------------------------------------------------------------------------
+
+function changed(name) {
+  refreshControls();
+  if (name === 'fractal.formula' && state['fractal.formula'] !== mapFormula) loadMap();
+  else drawMap();
+  viewChanged();
+}
+
+async function main() {
+  // The starting view needs no table (it changes no key): its first frame is asked for at once,
+  // alongside the table.
+  lastChange = performance.now();
+  requestLevel(0);
+  table = await (await fetch('/api/parameters')).json();
+  for (const parameter of table) {
+    start[parameter.name] = parameter.value;
+    state[parameter.name] = structuredClone(parameter.value);
+  }
+  refreshControls = buildControls(controls, table, state, changed);
+  buildPresets();
+  drawMap();  // c, before the map's image arrives
+  if (!inflight && view.dataset.level !== undefined) requestLevel(+view.dataset.level + 1);
+}
+main();
