@@ -36,12 +36,17 @@ struct RayLanes {
     QUATERNIA_LANE_ARRAY(T, confirming);
     QUATERNIA_LANE_ARRAY(T, steps);
     QUATERNIA_LANE_ARRAY(T, live);
+    // Over-relaxed marching (shadow rays): the last ball's radius, the last step, the factor.
+    QUATERNIA_LANE_ARRAY(T, radius);
+    QUATERNIA_LANE_ARRAY(T, lastStep);
+    QUATERNIA_LANE_ARRAY(T, relaxation);
     int64_t ray[kLaneCapacity<T>] = {};
 
     // Puts ray `next` of the batch into `lane` (and advances next), or empties the lane when the
     // batch is exhausted. Camera rays start at tNear; shadow rays at 0 with confirming = 1, the
     // running visibility.
-    void load(size_t lane, const RayBatch& rays, size_t& next, bool startAtZero = false) {
+    void load(size_t lane, const RayBatch& rays, size_t& next, bool startAtZero = false,
+              T relax = T(1)) {
         if (next >= rays.size()) {
             ray[lane] = -1;
             live[lane] = T(0);
@@ -57,6 +62,8 @@ struct RayLanes {
         tFar[lane] = T(rays.tFar[i]);
         confirming[lane] = startAtZero ? T(1) : T(0);
         steps[lane] = T(0);
+        radius[lane] = lastStep[lane] = T(0);
+        relaxation[lane] = relax;
     }
 };
 

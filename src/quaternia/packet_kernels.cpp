@@ -323,7 +323,7 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
     LaneScratch<T> finished;
     size_t next = 0;
     for (size_t lane = 0; lane < K * lanes; ++lane)
-        s.load(lane, rays, next, /*startAtZero=*/true);
+        s.load(lane, rays, next, /*startAtZero=*/true, T(march.relaxation));
 
     const V zero = hn::Zero(d), one = hn::Set(d, T(1));
     const V minimumStep = hn::Set(d, T(march.minimumStep));
@@ -339,14 +339,26 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
         bool anyDone = false;
         for (size_t j = 0; j < K; ++j) {
             const size_t o = j * lanes;
-            auto blocked = hn::And(live[j], hn::Or(e[j].inside, e[j].distance < blockDistance));
+            // Over-relaxation as Shader::shadow: where the balls of this point and the last do
+            // not overlap, go back to the plain step and stay plain.
+            const V radius = hn::Load(d, s.radius + o), lastStep = hn::Load(d, s.lastStep + o);
+            V relaxation = hn::Load(d, s.relaxation + o);
+            const auto gap =
+                hn::And(live[j], hn::And(relaxation > one, radius + e[j].distance < lastStep));
+            const auto accepted = hn::AndNot(gap, live[j]);
+            auto blocked = hn::And(accepted, hn::Or(e[j].inside, e[j].distance < blockDistance));
             // The penumbra: how nearly the ray grazed the set relative to how far it went.
             V open = hn::Load(d, s.confirming + o);  // the running visibility of this ray
             if (march.soft) {
-                open = hn::IfThenElse(t[j] > zero, hn::Min(open, softness * e[j].distance / t[j]),
-                                      open);
+                open = hn::IfThenElse(hn::And(accepted, t[j] > zero),
+                                      hn::Min(open, softness * e[j].distance / t[j]), open);
             }
-            const V tNext = t[j] + hn::Max(e[j].distance, minimumStep);
+            const V newRadius = hn::Max(e[j].distance, minimumStep);
+            const V step = hn::IfThenElse(gap, radius, relaxation * newRadius);
+            const V tNext = hn::IfThenElse(gap, t[j] + radius - lastStep, t[j] + step);
+            hn::Store(hn::IfThenElse(gap, radius, newRadius), d, s.radius + o);
+            hn::Store(step, d, s.lastStep + o);
+            hn::Store(hn::IfThenElse(gap, one, relaxation), d, s.relaxation + o);
             const V steps = hn::Load(d, s.steps + o) + one;
             auto cleared = hn::AndNot(
                 blocked,
@@ -363,7 +375,7 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
         for (size_t lane = 0; lane < K * lanes; ++lane) {
             if (finished.kind[lane] == T(0)) continue;
             visibility[size_t(s.ray[lane])] = finished.a[lane];
-            s.load(lane, rays, next, /*startAtZero=*/true);
+            s.load(lane, rays, next, /*startAtZero=*/true, T(march.relaxation));
         }
     }
 }

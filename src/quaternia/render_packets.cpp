@@ -157,6 +157,8 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
     shadowMarch.minimumStep = shader_.shadowMinimumStep();
     shadowMarch.softness = shader_.shadowSoftness();
     shadowMarch.soft = shader_.shadows() == Shadows::Soft;
+    shadowMarch.maxSteps = Shader::kShadowSteps;
+    shadowMarch.relaxation = Shader::kShadowRelaxation;
     traceShadowRays(lanes_, shadowMarch, shadowRays_, shadowVisibility_, stats.shading);
 
     if (shader_.occlusionEnabled()) {

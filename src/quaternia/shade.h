@@ -51,6 +51,9 @@ class Shader {
     double shadowMinimumStep() const;
     double shadowSoftness() const { return settings_.shadowSoftness; }
     const Vector3d& lightDirection() const { return lightDirection_; }
+    // Shadow rays: at most kShadowSteps estimates, over-relaxed steps (shadow()).
+    static constexpr int kShadowSteps = 256;
+    static constexpr double kShadowRelaxation = 1.6;
     // The visibility a shadow ray's march leaves (0 blocked; the running penumbra or 1) as light.
     double visibilityFromMarch(double marched) const;
     // Ambient occlusion: kOcclusionSamples estimates at occlusionHeight(1..n) along the normal.
