@@ -212,6 +212,7 @@ async function loadMap() {
   if (response.status !== 200) return;
   mapImage = await createImageBitmap(await response.blob());
   drawMap();
+  document.body.dataset.map = 'ready';
 }
 
 function drawMap() {

@@ -27,6 +27,7 @@ try {
   step(`page loaded, final image ${first.length} bytes`);
 
   if (screenshot) {
+    await page.waitForFunction(() => document.body.dataset.map === 'ready');
     await page.screenshot({ path: screenshot });
     step('wrote ' + screenshot);
   } else {
