@@ -48,6 +48,10 @@ double continuationRadiusSquared(int degree) {
                     std::pow(largest, 1.0 / std::max(1, degree)));
 }
 
+// The highest degree d of s z^d + c that the SIMD kernels take (LaneFractal::from); higher
+// degrees use the scalar path.
+inline constexpr int kMaxLaneDegree = 16;
+
 // The continuous escape count n + 1 - log_d(ln|z_n|) of an orbit that has |z_n|^2 = radiusSquared
 // after n iterations, far outside the set: the renormalised iteration count (Vepstas 1997;
 // Peitgen, Richter 1986), continuous in z_0 because ln|z_{n+1}| ~ d ln|z_n| there. Degrees

@@ -15,9 +15,6 @@
 #define QUATERNIA_JULIA_LANES_INL_H_
 #endif
 
-// The highest degree d of s z^d + c that the lane kernels take (LaneFractal::from).
-constexpr int kMaxLaneDegree = 16;
-
 // A quaternion w + x i + y j + z k whose components are lanes.
 template <class V>
 struct QuaternionLanes {
@@ -73,7 +70,7 @@ inline QuaternionLanes<V> quadraticDerivativeLanes(const QuaternionLanes<V>& z,
             zw * h.y + hw * z.y, zw * h.z + hw * z.z};
 }
 
-// The derivative of s z^d at z applied to h: s sum_{k=0}^{d-1} z^k h z^(d-1-k) (the product rule;
+// The derivative of s z^d at z applied to h, for d <= kMaxLaneDegree (distance.h): s sum_{k=0}^{d-1} z^k h z^(d-1-k) (the product rule;
 // the factors do not commute).
 template <class V>
 inline QuaternionLanes<V> powerDerivativeLanes(const QuaternionLanes<V>& z,

@@ -8,8 +8,7 @@ namespace quaternia {
 std::optional<LaneFractal> LaneFractal::from(const Fractal& fractal, Precision precision) {
     const JuliaSet& set = fractal.set();
     std::optional<PowerForm> power = set.polynomial().powerForm();
-    // kMaxLaneDegree of julia_lanes-inl.h.
-    if (!power || power->degree < 1 || power->degree > 16) return std::nullopt;
+    if (!power || power->degree < 1 || power->degree > kMaxLaneDegree) return std::nullopt;
     LaneFractal lanes;
     auto components = [](const Quaternion& q) { return std::array<double, 4>{q.w, q.x, q.y, q.z}; };
     const Slice& slice = fractal.slice();
