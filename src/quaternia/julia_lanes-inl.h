@@ -70,8 +70,8 @@ inline QuaternionLanes<V> quadraticDerivativeLanes(const QuaternionLanes<V>& z,
             zw * h.y + hw * z.y, zw * h.z + hw * z.z};
 }
 
-// The derivative of s z^d at z applied to h, for d <= kMaxLaneDegree (distance.h): s sum_{k=0}^{d-1} z^k h z^(d-1-k) (the product rule;
-// the factors do not commute).
+// The derivative of s z^d at z applied to h, for d <= kMaxLaneDegree (distance.h): s
+// sum_{k=0}^{d-1} z^k h z^(d-1-k) (the product rule; the factors do not commute).
 template <class V>
 inline QuaternionLanes<V> powerDerivativeLanes(const QuaternionLanes<V>& z,
                                                const QuaternionLanes<V>& h, int degree, V scale) {
