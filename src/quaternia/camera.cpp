@@ -19,12 +19,6 @@ Camera::Camera(const CameraSettings& settings, int width, int height)
     pixelAngle_ = 2.0 * std::tan(halfAngle) / double(width);
 }
 
-Ray Camera::generateRay(double x, double y) const {
-    double x0 = x / width_ - 0.5;
-    double y0 = 0.5 - y / height_;
-    return Ray{position_, normalize(direction_ + right_ * x0 + up_ * y0)};
-}
-
 std::optional<std::array<double, 2>> Camera::project(const Point3d& p) const {
     // D, R and U are orthogonal: p - position = s (D + x0 R + y0 U) splits along them.
     Vector3d v = p - position_;

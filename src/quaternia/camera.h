@@ -21,7 +21,11 @@ class Camera {
 
     // The ray through the image point (x, y) in pixel units: (px + 0.5, py + 0.5) is the centre
     // of pixel (px, py); other values are used for sub-pixel samples.
-    Ray generateRay(double x, double y) const;
+    Ray generateRay(double x, double y) const {
+        double x0 = x / width_ - 0.5;
+        double y0 = 0.5 - y / height_;
+        return Ray{position_, normalize(direction_ + right_ * x0 + up_ * y0)};
+    }
     // The inverse: the image point (x, y) whose ray passes through p, or nullopt when p is not
     // in front of the camera. For drawing geometry (a mesh's silhouette) in the same picture.
     std::optional<std::array<double, 2>> project(const Point3d& p) const;

@@ -32,18 +32,8 @@ void RayBatch::clear() {
         v->clear();
 }
 
-void RayBatch::push(const Ray& ray, double near, double far) {
-    ox.push_back(ray.origin.x), oy.push_back(ray.origin.y), oz.push_back(ray.origin.z);
-    dx.push_back(ray.direction.x), dy.push_back(ray.direction.y), dz.push_back(ray.direction.z);
-    tNear.push_back(near), tFar.push_back(far);
-}
-
 void PointBatch::clear() {
     x.clear(), y.clear(), z.clear();
-}
-
-void PointBatch::push(const Point3d& p) {
-    x.push_back(p.x), y.push_back(p.y), z.push_back(p.z);
 }
 
 }  // namespace quaternia

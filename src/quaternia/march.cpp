@@ -5,18 +5,6 @@
 
 namespace quaternia {
 
-std::optional<RayInterval> intersectSphere(const Ray& ray, double radius) {
-    // |o + t d|^2 = r^2 with |d| = 1: t^2 + 2 b t + c = 0.
-    double b = dot(ray.origin, ray.direction);
-    double c = dot(ray.origin, ray.origin) - radius * radius;
-    double discriminant = b * b - c;
-    if (discriminant < 0) return std::nullopt;
-    double root = std::sqrt(discriminant);
-    double tFar = -b + root;
-    if (tFar < 0) return std::nullopt;
-    return RayInterval{std::max(0.0, -b - root), tFar};
-}
-
 MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
     // Once the estimate is below epsilon the ray is within about two epsilons of K_N (the
     // estimate is at least half the true distance near the set). Rather than stop on that offset

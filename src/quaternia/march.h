@@ -9,6 +9,8 @@
 //   and no feature wider than a pixel is skipped.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 
@@ -22,7 +24,17 @@ struct RayInterval {
     double tNear, tFar;
 };
 // Where the ray is inside the ball of the given radius about the origin, for t >= 0.
-std::optional<RayInterval> intersectSphere(const Ray& ray, double radius);
+inline std::optional<RayInterval> intersectSphere(const Ray& ray, double radius) {
+    // |o + t d|^2 = r^2 with |d| = 1: t^2 + 2 b t + c = 0.
+    double b = dot(ray.origin, ray.direction);
+    double c = dot(ray.origin, ray.origin) - radius * radius;
+    double discriminant = b * b - c;
+    if (discriminant < 0) return std::nullopt;
+    double root = std::sqrt(discriminant);
+    double tFar = -b + root;
+    if (tFar < 0) return std::nullopt;
+    return RayInterval{std::max(0.0, -b - root), tFar};
+}
 
 // Sphere tracing's membership confirmation (sphereTrace): once the estimate is below epsilon,
 // steps of at least this many pixel footprints, for at most this many steps.

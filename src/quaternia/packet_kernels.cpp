@@ -525,9 +525,11 @@ void PotentialNormals(const LaneFractal& fractal, const PointBatch& points,
         potentialNormalLanes<quadratic()>(d, fractal, points, iterations, normals, counters);
     });
 }
-void EncodeDisplay(float* values, size_t count, float exposure, float inverseGamma) {
+void EncodeDisplay(float* values, size_t pixels, float exposure, float inverseGamma) {
     const hn::ScalableTag<float> d;
+    const hn::RebindToSigned<decltype(d)> di;
     const size_t lanes = hn::Lanes(d);
+    const size_t count = 4 * pixels;
     const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), scale = hn::Set(d, exposure),
                power = hn::Set(d, inverseGamma), tiny = hn::Set(d, 1e-30f);
     auto encode = [&](hn::Vec<decltype(d)> v) {
@@ -535,13 +537,19 @@ void EncodeDisplay(float* values, size_t count, float exposure, float inverseGam
         // v^g = exp(g ln v); v = 0 gives 0.
         return hn::IfThenZeroElse(v <= zero, hn::Exp(d, power * hn::Log(d, hn::Max(v, tiny))));
     };
+    // Value i is channel i mod 4 of its pixel; channel 3, alpha, passes unchanged.
+    const auto three = hn::Set(di, 3);
+    auto encodeColours = [&](size_t i, hn::Vec<decltype(d)> v) {
+        const auto alpha = hn::RebindMask(d, hn::And(hn::Iota(di, int32_t(i)), three) == three);
+        return hn::IfThenElse(alpha, v, encode(v));
+    };
     size_t i = 0;
     for (; i + lanes <= count; i += lanes)
-        hn::StoreU(encode(hn::LoadU(d, values + i)), d, values + i);
+        hn::StoreU(encodeColours(i, hn::LoadU(d, values + i)), d, values + i);
     if (i < count) {
         alignas(kMaxLaneBytes) float tail[kMaxLaneBytes / sizeof(float)] = {};
         std::copy(values + i, values + count, tail);
-        hn::Store(encode(hn::Load(d, tail)), d, tail);
+        hn::Store(encodeColours(i, hn::Load(d, tail)), d, tail);
         std::copy(tail, tail + (count - i), values + i);
     }
 }
@@ -580,8 +588,8 @@ void potentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       LaneCounters& counters) {
     HWY_DYNAMIC_DISPATCH(PotentialNormals)(fractal, points, iterations, normals, counters);
 }
-void encodeDisplay(float* values, size_t count, float exposure, float inverseGamma) {
-    HWY_DYNAMIC_DISPATCH(EncodeDisplay)(values, count, exposure, inverseGamma);
+void encodeDisplay(float* rgba, size_t pixels, float exposure, float inverseGamma) {
+    HWY_DYNAMIC_DISPATCH(EncodeDisplay)(rgba, pixels, exposure, inverseGamma);
 }
 const char* laneTargetName() {
     return HWY_DYNAMIC_DISPATCH(TargetName)();

@@ -53,7 +53,11 @@ struct LaneCounters {
 struct RayBatch {
     std::vector<double> ox, oy, oz, dx, dy, dz, tNear, tFar;
     void clear();
-    void push(const Ray& ray, double near, double far);
+    void push(const Ray& ray, double near, double far) {
+        ox.push_back(ray.origin.x), oy.push_back(ray.origin.y), oz.push_back(ray.origin.z);
+        dx.push_back(ray.direction.x), dy.push_back(ray.direction.y), dz.push_back(ray.direction.z);
+        tNear.push_back(near), tFar.push_back(far);
+    }
     size_t size() const { return ox.size(); }
 };
 
@@ -61,7 +65,7 @@ struct RayBatch {
 struct PointBatch {
     std::vector<double> x, y, z;
     void clear();
-    void push(const Point3d& p);
+    void push(const Point3d& p) { x.push_back(p.x), y.push_back(p.y), z.push_back(p.z); }
     size_t size() const { return x.size(); }
 };
 
@@ -117,9 +121,10 @@ void potentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       const std::vector<int>& iterations, std::vector<Vector3d>& normals,
                       LaneCounters& counters);
 
-// Display encoding of linear values in place: min(1, max(0, v * exposure))^inverseGamma, as
-// Shader::toDisplay, many values at once.
-void encodeDisplay(float* values, size_t count, float exposure, float inverseGamma);
+// Display encoding in place of `pixels` RGBA pixels (four floats each, packed): each colour
+// channel v becomes min(1, max(0, v * exposure))^inverseGamma, as Shader::toDisplay; alpha is
+// kept.
+void encodeDisplay(float* rgba, size_t pixels, float exposure, float inverseGamma);
 
 // The SIMD target the dispatcher chose on this CPU, e.g. "AVX2".
 const char* laneTargetName();

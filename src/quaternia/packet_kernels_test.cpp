@@ -7,6 +7,8 @@
 
 #include <hwy/targets.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -201,6 +203,35 @@ TEST(PacketKernels, EveryCompiledTargetAgrees) {
         }
     }
     hwy::SetSupportedTargetsForTest(0);  // back to what the CPU supports
+}
+
+// Display encoding of packed RGBA pixels: colour channels as Shader::toDisplay's formula (to
+// float precision), alpha untouched, on every target and for counts that leave a partial vector.
+TEST(PacketKernels, DisplayEncodingKeepsAlphaOnEveryTarget) {
+    const float exposure = 1.3f, inverseGamma = 1 / 2.2f;
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> value(-0.5f, 1.5f), alpha(0.0f, 1.0f);
+    for (int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        for (size_t pixels : {1u, 3u, 16u, 37u}) {
+            std::vector<float> linear(4 * pixels);
+            for (size_t i = 0; i < linear.size(); ++i)
+                linear[i] = i % 4 == 3 ? alpha(random) : value(random);
+            std::vector<float> encoded = linear;
+            encodeDisplay(encoded.data(), pixels, exposure, inverseGamma);
+            for (size_t i = 0; i < linear.size(); ++i) {
+                if (i % 4 == 3) {
+                    ASSERT_EQ(encoded[i], linear[i])
+                        << hwy::TargetName(target) << " pixel " << i / 4;
+                } else {
+                    const float expected =
+                        std::pow(std::clamp(linear[i] * exposure, 0.0f, 1.0f), inverseGamma);
+                    ASSERT_NEAR(encoded[i], expected, 2e-6f) << hwy::TargetName(target);
+                }
+            }
+        }
+    }
+    hwy::SetSupportedTargetsForTest(0);
 }
 
 }  // namespace

@@ -39,7 +39,6 @@ struct alignas(64) ThreadTotals {
     RenderStats stats;
     std::unique_ptr<PacketTileRenderer> packets;  // the SIMD path's batches
     std::vector<PixelSamples> pixels;
-    std::vector<float> display;  // a tile's colours on their way to display encoding
 };
 
 }  // namespace
@@ -93,29 +92,28 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         lanes = LaneFractal::from(fractal, settings.precision);
     result.stats.engine = lanes ? laneTargetName() : "scalar";
 
-    // A pixel's samples to its colour, alpha and depth: the same for both paths.
-    // `encode` false leaves linear colour for the caller to encode (the SIMD path, a tile at once).
-    auto finishPixel = [&](int px, int py, const PixelSamples& samplesOfPixel, RenderStats& stats,
-                           bool encode) {
+    // A pixel's samples to its linear colour and alpha (and its depth): the same for both paths.
+    // The background, seen through the pixel centre, only where some sample missed.
+    auto finishPixel = [&](int px, int py, const PixelSamples& samplesOfPixel) {
         const int hits = samplesOfPixel.hits;
-        stats.rays += samples;
-        stats.hits += hits;
-        const Color& background = samplesOfPixel.background;
         double coverage = double(hits) / samples;
         Color color;
-        if (settings.alpha == AlphaMode::Opaque) {
-            color = samplesOfPixel.sum / double(samples) + background * (1 - coverage);
-            coverage = 1;
+        if (hits == samples) {
+            color = samplesOfPixel.sum / double(samples);
         } else {
-            color = hits > 0 ? samplesOfPixel.sum / double(hits) : background;
+            const Color background = shader.background(camera.generateRay(px + 0.5, py + 0.5));
+            if (settings.alpha == AlphaMode::Opaque) {
+                color = samplesOfPixel.sum / double(samples) + background * (1 - coverage);
+            } else {
+                color = hits > 0 ? samplesOfPixel.sum / double(hits) : background;
+            }
         }
-        Color display = encode ? shader.toDisplay(color) : color;
-        result.image.at(px, py) =
-            Rgba{float(display.x), float(display.y), float(display.z), float(coverage)};
+        if (settings.alpha == AlphaMode::Opaque) coverage = 1;
         if (options.depth) {
             double depth = hits > 0 ? (samplesOfPixel.depthSum / hits - depthNear) / depthRange : 1;
             result.depth.at(px, py) = float(std::clamp(depth, 0.0, 1.0));
         }
+        return Rgba{float(color.x), float(color.y), float(color.z), float(coverage)};
     };
 
     auto renderPixel = [&](int px, int py, RenderStats& stats) {
@@ -134,8 +132,12 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             pixel.depthSum += marched.hit->t;
         }
         stats.shadingEstimates += shading.estimates;
-        pixel.background = shader.background(camera.generateRay(px + 0.5, py + 0.5));
-        finishPixel(px, py, pixel, stats, true);
+        stats.rays += samples;
+        stats.hits += pixel.hits;
+        Rgba linear = finishPixel(px, py, pixel);
+        Color display = shader.toDisplay(Color(linear.r, linear.g, linear.b));
+        result.image.at(px, py) =
+            Rgba{float(display.x), float(display.y), float(display.z), linear.a};
     };
 
     auto renderTilePackets = [&](const Tile& tile, ThreadTotals& thread) {
@@ -151,26 +153,19 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         stats.shadingEstimates += tileStats.shading.estimates;
         stats.laneIterations += tileStats.camera.laneIterations + tileStats.shading.laneIterations;
         stats.laneSlots += tileStats.camera.laneSlots + tileStats.shading.laneSlots;
+        // The tile's linear colours in place, then display-encoded together (SIMD).
         const int width = tile.x1 - tile.x0;
-        std::vector<float>& linear = thread.display;
-        linear.resize(thread.pixels.size() * 3);
-        float* next = linear.data();
+        const PixelSamples* pixel = thread.pixels.data();
         for (int py = tile.y0; py < tile.y1; ++py) {
-            for (int px = tile.x0; px < tile.x1; ++px, next += 3) {
-                finishPixel(px, py, thread.pixels[size_t((py - tile.y0) * width + px - tile.x0)],
-                            stats, false);
-                const Rgba& c = result.image.at(px, py);
-                next[0] = c.r, next[1] = c.g, next[2] = c.b;
+            Rgba* row = &result.image.at(tile.x0, py);
+            for (int px = tile.x0; px < tile.x1; ++px, ++pixel) {
+                stats.hits += pixel->hits;
+                *row++ = finishPixel(px, py, *pixel);
             }
+            // Rgba is four floats: the row's colour channels encode in place, alpha kept.
+            shader.toDisplay(row - width, size_t(width));
         }
-        shader.toDisplay(linear.data(), linear.size());
-        const float* encoded = linear.data();
-        for (int py = tile.y0; py < tile.y1; ++py) {
-            for (int px = tile.x0; px < tile.x1; ++px, encoded += 3) {
-                Rgba& c = result.image.at(px, py);
-                c.r = encoded[0], c.g = encoded[1], c.b = encoded[2];
-            }
-        }
+        stats.rays += int64_t(samples) * int64_t(thread.pixels.size());
     };
 
     auto start = std::chrono::steady_clock::now();

@@ -30,11 +30,6 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
             for (int px = tile.x0; px < tile.x1; ++px) {
                 auto [sx, sy] = samplePosition(k, samples_, px, py);
                 Ray ray = camera_.generateRay(px + sx, py + sy);
-                if (k == 0) {
-                    PixelSamples& pixel = pixels[size_t((py - tile.y0) * width + px - tile.x0)];
-                    pixel.background = shader_.background(
-                        samples_ == 1 ? ray : camera_.generateRay(px + 0.5, py + 0.5));
-                }
                 auto interval = intersectSphere(ray, boundingRadius_);
                 if (!interval) continue;
                 const double start = blockStart_[size_t(

@@ -19,7 +19,6 @@ struct PixelSamples {
     Color sum;
     double depthSum = 0;
     int hits = 0;
-    Color background;  // seen through the pixel centre
 };
 
 // Work of one tile, for RenderStats.

@@ -158,8 +158,9 @@ Color Shader::background(const Ray& ray) const {
     return lerp(settings_.backgroundBottom, settings_.backgroundTop, v);
 }
 
-void Shader::toDisplay(float* linear, size_t count) const {
-    encodeDisplay(linear, count, float(settings_.exposure), float(1.0 / settings_.gamma));
+void Shader::toDisplay(Rgba* pixels, size_t count) const {
+    static_assert(sizeof(Rgba) == 4 * sizeof(float), "Rgba is four packed floats");
+    encodeDisplay(&pixels->r, count, float(settings_.exposure), float(1.0 / settings_.gamma));
 }
 
 Color Shader::toDisplay(const Color& linear) const {

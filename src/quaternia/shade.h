@@ -6,6 +6,7 @@
 #pragma once
 
 #include "fractal.h"
+#include "image.h"
 #include "march.h"
 #include "scene.h"
 
@@ -68,8 +69,9 @@ class Shader {
     Color light(const SurfaceSample& sample, const Ray& ray) const;
     // Exposure, clamp to [0, 1] and gamma: the values written to an 8- or 16-bit image.
     Color toDisplay(const Color& linear) const;
-    // The same for many values in place (SIMD, packet_kernels.h; equal to float rounding).
-    void toDisplay(float* linear, size_t count) const;
+    // The same for the colours of many pixels in place, alpha kept (SIMD, packet_kernels.h;
+    // equal to float rounding).
+    void toDisplay(Rgba* pixels, size_t count) const;
 
   private:
     ShadingSettings settings_;
