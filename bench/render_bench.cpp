@@ -2,6 +2,8 @@
 // Counters explain the speed: rays/s, estimates and iterations per ray.
 #include <benchmark/benchmark.h>
 
+#include <hwy/targets.h>
+
 #include <random>
 
 #include "quaternia/fractal.h"
@@ -66,7 +68,8 @@ void BM_DistanceEstimateLanes(benchmark::State& state) {
 BENCHMARK(BM_DistanceEstimateLanes)->Arg(0)->Arg(1);
 
 // A whole frame: arguments are width, height, samples, threads (0 = all cores) and the path
-// (0 SIMD single, 1 SIMD double, 2 scalar reference).
+// (0 SIMD single, 1 SIMD double, 2 scalar reference, 3 SIMD single with AVX-512 switched off:
+// what a machine with AVX2 as its widest SIMD would run, comparable across machines).
 void BM_RenderDefaultScene(benchmark::State& state) {
     Scene scene = defaultScene();
     scene.render.width = int(state.range(0));
@@ -76,9 +79,11 @@ void BM_RenderDefaultScene(benchmark::State& state) {
     options.threads = int(state.range(3));
     scene.render.precision = state.range(4) == 1 ? Precision::Double : Precision::Single;
     scene.render.engine = state.range(4) == 2 ? RenderEngine::Scalar : RenderEngine::Simd;
+    if (state.range(4) == 3) hwy::DisableTargets(HWY_AVX3 | HWY_AVX3_DL);
     RenderStats last;
     for (auto _ : state)
         last = render(scene, options).stats;
+    hwy::DisableTargets(0);
     state.SetLabel(last.engine);
     state.counters["lane_utilisation"] =
         last.laneSlots ? double(last.laneIterations) / double(last.laneSlots) : 0.0;
@@ -94,7 +99,10 @@ BENCHMARK(BM_RenderDefaultScene)
     ->Args({640, 360, 1, 1, 0})
     ->Args({640, 360, 1, 0, 1})
     ->Args({640, 360, 1, 0, 2})
+    ->Args({640, 360, 1, 0, 3})
     ->Args({1920, 1080, 1, 0, 0})
+    ->Args({1920, 1080, 1, 1, 0})
+    ->Args({1920, 1080, 1, 0, 3})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
