@@ -69,7 +69,6 @@ struct LaneConstants {
 
 template <class D>
 struct LaneEstimate {
-    // trapSquared and iterations only where estimateLanes keeps the orbit (kOrbit).
     hn::Vec<D> distance, trapSquared, iterations, radiusSquared;
     hn::Mask<D> inside;
 };
@@ -120,7 +119,6 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
         allDone = allDone && hn::AllTrue(d, done[j]);
     }
     const int64_t lanes = int64_t(hn::Lanes(d));
-    int64_t working[K] = {};  // lane iterations of live lanes not yet done (certified path)
     const int iterationCap = k.maxIterationCount + kMaxContinuation;
     // Where the bailout is at least the certified escape radius (the default), every escape is
     // final and |z| grows from then on: a lane stops at the estimate radius, and the lanes not
@@ -153,9 +151,7 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
                 stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
                 stopDerivativeSquared[j] =
                     hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
-                // The count only for the counters: each lane not yet done did one more
-                // useful iteration (cheaper than keeping the stop iteration in a vector).
-                working[j] += int64_t(hn::CountTrue(d, hn::AndNot(done[j], live[j])));
+                stopIteration[j] = hn::IfThenElse(stopNow, iteration, stopIteration[j]);
                 done[j] = hn::Or(done[j], stopNow);
                 allDone = allDone && hn::AllTrue(d, done[j]);
                 continue;
@@ -189,12 +185,8 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
         V derivative = hn::IfThenElse(unfinished, derivativeSquared[j], stopDerivativeSquared[j]);
         stopIteration[j] = hn::IfThenElse(unfinished, iteration, stopIteration[j]);
         // Utilisation: each lane did useful work until it stopped; the slots are all lanes.
-        if (certified) {
-            counters.laneIterations += working[j];
-        } else {
-            counters.laneIterations += int64_t(
-                hn::GetLane(hn::SumOfLanes(d, hn::IfThenElseZero(live[j], stopIteration[j]))));
-        }
+        counters.laneIterations +=
+            int64_t(hn::GetLane(hn::SumOfLanes(d, hn::IfThenElseZero(live[j], stopIteration[j]))));
         counters.laneSlots += lanes * int64_t(n - 1);
         // d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2) ln |z|^2; an overflowed |z'|^2
         // gives 0, which is right: the distance is then far below any step.
