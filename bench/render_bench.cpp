@@ -10,6 +10,7 @@
 #include "quaternia/mesher.h"
 #include "quaternia/packet_kernels.h"
 #include "quaternia/parameters.h"
+#include "quaternia/png_io.h"
 #include "quaternia/render.h"
 
 namespace quaternia {
@@ -105,6 +106,28 @@ BENCHMARK(BM_RenderDefaultScene)
     ->Args({1920, 1080, 1, 0, 3})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// Encoding a rendered 1920x1080 frame as an 8-bit PNG: the argument is the alpha mode (0
+// coverage, as the default scene renders, 1 opaque). The frame is rendered once, outside the
+// timing, with 1 sample per pixel; "bytes" is the size of the file.
+void BM_EncodePng(benchmark::State& state) {
+    Scene scene = defaultScene();
+    scene.render.width = 1920;
+    scene.render.height = 1080;
+    scene.render.samples = 1;
+    scene.render.alpha = state.range(0) == 1 ? AlphaMode::Opaque : AlphaMode::Coverage;
+    const Image image = render(scene).image;
+    size_t bytes = 0;
+    for (auto _ : state) {
+        std::vector<uint8_t> png = encodePng(image, 8);
+        bytes = png.size();
+        benchmark::DoNotOptimize(png.data());
+    }
+    state.counters["bytes"] = double(bytes);
+    state.counters["pixels/s"] = benchmark::Counter(
+        double(image.pixels().size()) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_EncodePng)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The default scene's mesh: the argument is mesh.resolution.
 void BM_MeshDefaultScene(benchmark::State& state) {

@@ -61,7 +61,7 @@ void addPlaneCommand(CLI::App& app, PlaneCommandOptions& options) {
         "plane",
         "Draw a 2D image: a Julia set, its boundary, the Mandelbrot set, basins of "
         "attraction or a plane through a quaternion Julia set (plane.kind)");
-    addSceneOptions(*plane, options, "Output PNG (RGBA, opaque)");
+    addSceneOptions(*plane, options, "Output PNG (RGB: plane images are opaque)");
     plane->footer("Scene keys (scene file sections, or --set section.key=value):\n" +
                   parameterHelp());
 }

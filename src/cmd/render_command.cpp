@@ -48,7 +48,8 @@ void printSummary(const RenderCommandOptions& options, const Scene& scene,
 
 void addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
     CLI::App* render = app.add_subcommand("render", "Render a quaternion Julia set to a PNG");
-    addSceneOptions(*render, options, "Output PNG (RGBA, alpha = coverage)");
+    addSceneOptions(*render, options,
+                    "Output PNG (RGBA, alpha = coverage; RGB when every pixel is opaque)");
     render->add_option("--depth", options.depthOutput,
                        "Also write a 16-bit grey depth pass to this PNG");
     render->footer("Scene keys (scene file sections, or --set section.key=value):\n" +

@@ -1,15 +1,17 @@
+// Encoding quantises the samples here and hands them to our own writer (png_writer.h); decoding
+// goes through libpng.
+//
 // libpng reports an error by calling our error handler, which must not return: it longjmps back
 // to the last setjmp on png_jmpbuf. C++ allows a longjmp only where a throw to the same place
 // would destroy no objects with non-trivial destructors ([support.runtime]), so every function
-// that libpng can longjmp out of (the setjmp functions writeImage, readHeader and readRows, and
-// the I/O callbacks) holds only trivially destructible locals; the output vector, the row
-// buffers and the RAII owners of the png structs live in their callers, which libpng never
-// sees. Callback code that may throw (vector growth) runs in a separate noexcept function and
-// only reports failure, so no exception crosses libpng's C frames either.
+// that libpng can longjmp out of (the setjmp functions readHeader and readRows, and the read
+// callback) holds only trivially destructible locals; the row buffers and the RAII owner of the
+// png structs live in their callers, which libpng never sees.
 #include "png_io.h"
 
 #include <png.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -18,8 +20,10 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "png_writer.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/parallel.h"
 
 namespace quaternia {
 
@@ -43,111 +47,56 @@ void onPngWarning(png_structp, png_const_charp) {}  // library code never prints
 
 // ---- encoding ----------------------------------------------------------------------------
 
-// Clamped to [0, 1] (NaN to 0), then rounded to the nearest of 0 .. maxValue. In double: a
+// Clamped to [0, 1] (NaN to 0), then rounded to the nearest of 0 .. MaxValue. In double: a
 // float times 65535 keeps too few fractional bits to round reliably.
-uint16_t quantise(float value, uint32_t maxValue) {
+template <uint32_t MaxValue>
+uint32_t quantise(float value) {
     if (!(value > 0.0f)) return 0;
-    if (value >= 1.0f) return uint16_t(maxValue);
-    return uint16_t(double(value) * double(maxValue) + 0.5);
+    if (value >= 1.0f) return MaxValue;
+    return uint32_t(double(value) * double(MaxValue) + 0.5);
 }
 
-// Appends one quantised sample, big-endian as PNG stores it.
-uint8_t* putSample(uint8_t* out, float value, int bitDepth) {
-    if (bitDepth == 8) {
-        *out++ = uint8_t(quantise(value, 255));
+// Writes one quantised sample, big-endian as PNG stores it, and returns its end.
+template <int BitDepth>
+uint8_t* putSample(uint8_t* out, float value) {
+    if constexpr (BitDepth == 8) {
+        *out++ = uint8_t(quantise<255>(value));
     } else {
-        uint16_t v = quantise(value, 65535);
+        const uint32_t v = quantise<65535>(value);
         *out++ = uint8_t(v >> 8);
         *out++ = uint8_t(v & 0xff);
     }
     return out;
 }
 
-struct WriteSink {
-    std::vector<uint8_t>* bytes;
-};
-
-bool appendBytes(std::vector<uint8_t>* bytes, const uint8_t* data, size_t length) noexcept {
-    try {
-        bytes->insert(bytes->end(), data, data + length);
-        return true;
-    } catch (...) {
-        return false;
+// Pixels [0, count) as PNG samples: r, g, b and, WithAlpha, a.
+template <int BitDepth, bool WithAlpha>
+void putPixels(const Rgba* pixels, size_t count, uint8_t* out) {
+    for (size_t i = 0; i < count; ++i) {
+        const Rgba& p = pixels[i];
+        out = putSample<BitDepth>(out, p.r);
+        out = putSample<BitDepth>(out, p.g);
+        out = putSample<BitDepth>(out, p.b);
+        if constexpr (WithAlpha) out = putSample<BitDepth>(out, p.a);
     }
 }
 
-void writeCallback(png_structp png, png_bytep data, size_t length) {
-    auto* sink = static_cast<WriteSink*>(png_get_io_ptr(png));
-    if (!appendBytes(sink->bytes, data, length)) png_error(png, "out of memory");
-}
+// Pixels per parallel item when quantising: small images stay on the calling thread.
+constexpr int64_t kQuantiseChunkPixels = 16384;
 
-void flushCallback(png_structp) {}
-
-class PngWriter {
-  public:
-    explicit PngWriter(ErrorState* errors) {
-        png_ = png_create_write_struct(PNG_LIBPNG_VER_STRING, errors, onPngError, onPngWarning);
-        if (png_) info_ = png_create_info_struct(png_);
-        if (!png_ || !info_) {
-            png_destroy_write_struct(&png_, &info_);
-            throw std::bad_alloc();
-        }
-    }
-    ~PngWriter() { png_destroy_write_struct(&png_, &info_); }
-    PngWriter(const PngWriter&) = delete;
-    PngWriter& operator=(const PngWriter&) = delete;
-
-    png_structp png() const { return png_; }
-    png_infop info() const { return info_; }
-
-  private:
-    png_structp png_ = nullptr;
-    png_infop info_ = nullptr;
-};
-
-struct EncodeJob {
-    png_uint_32 width, height;
-    int bitDepth, colorType;
-    png_bytepp rows;
-};
-
-// Trivially destructible locals only: libpng may longjmp to the setjmp here.
-bool writeImage(png_structp png, png_infop info, const EncodeJob& job, WriteSink* sink) {
-    if (setjmp(png_jmpbuf(png))) return false;
-    png_set_write_fn(png, sink, writeCallback, flushCallback);
-    png_set_IHDR(png, info, job.width, job.height, job.bitDepth, job.colorType, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    // Speed over the last few percent of size: zlib's level 1 with the Paeth filter is several
-    // times faster than the defaults (the whole adaptive filter search at level 6) and makes
-    // files about 10% larger on renders; encoding a 1080p frame otherwise costs a third of a
-    // render.
-    png_set_compression_level(png, 1);
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_PAETH);
-    png_write_info(png, info);
-    png_write_image(png, job.rows);
-    png_write_end(png, nullptr);
-    return true;
-}
-
-// `samples` holds the rows back to back, already in PNG's byte order.
-std::vector<uint8_t> encodeSamples(int width, int height, int bitDepth, int colorType,
-                                   std::vector<uint8_t>& samples) {
-    if (width <= 0 || height <= 0)
-        throw std::invalid_argument("cannot encode an empty image as PNG");
-    const size_t rowBytes = samples.size() / size_t(height);
-    std::vector<png_bytep> rows(static_cast<size_t>(height));
-    for (size_t y = 0; y < rows.size(); ++y)
-        rows[y] = samples.data() + y * rowBytes;
-
-    ErrorState errors;
-    PngWriter writer(&errors);
-    std::vector<uint8_t> bytes;
-    bytes.reserve(samples.size() / 2 + 1024);
-    WriteSink sink{&bytes};
-    const EncodeJob job{png_uint_32(width), png_uint_32(height), bitDepth, colorType, rows.data()};
-    if (!writeImage(writer.png(), writer.info(), job, &sink))
-        throw std::runtime_error(std::string("cannot encode PNG: ") + errors.message);
-    return bytes;
+// The samples of every pixel, bytesPerPixel bytes each, filled with the pixels spread over
+// every core: putRange(begin, end, out) writes those of pixels [begin, end) from `out` on. Not
+// zeroed first: every byte is written.
+template <class PutRange>
+std::unique_ptr<uint8_t[]> quantisePixels(size_t pixelCount, size_t bytesPerPixel,
+                                          const PutRange& putRange) {
+    auto samples = std::make_unique_for_overwrite<uint8_t[]>(pixelCount * bytesPerPixel);
+    ParallelOptions options;
+    options.chunkSize = kQuantiseChunkPixels;
+    parallelFor(int64_t(pixelCount), options, [&](int64_t begin, int64_t end, int) {
+        putRange(size_t(begin), size_t(end), samples.get() + size_t(begin) * bytesPerPixel);
+    });
+    return samples;
 }
 
 // ---- decoding ----------------------------------------------------------------------------
@@ -254,24 +203,40 @@ std::vector<uint8_t> encodePng(const Image& image, int bitDepth) {
     if (bitDepth != 8 && bitDepth != 16)
         throw std::invalid_argument("PNG bit depth must be 8 or 16, got " +
                                     std::to_string(bitDepth));
-    std::vector<uint8_t> samples(image.pixels().size() * 4 * size_t(bitDepth / 8));
-    uint8_t* out = samples.data();
-    for (const Rgba& p : image.pixels()) {
-        out = putSample(out, p.r, bitDepth);
-        out = putSample(out, p.g, bitDepth);
-        out = putSample(out, p.b, bitDepth);
-        out = putSample(out, p.a, bitDepth);
-    }
-    return encodeSamples(image.width(), image.height(), bitDepth, PNG_COLOR_TYPE_RGB_ALPHA,
-                         samples);
+    // An alpha channel that is all maximum says nothing: RGB is a quarter less to compress and
+    // decodes the same (opaque renders, plane images).
+    const bool opaque =
+        std::all_of(image.pixels().begin(), image.pixels().end(), [bitDepth](const Rgba& p) {
+            return bitDepth == 8 ? quantise<255>(p.a) == 255 : quantise<65535>(p.a) == 65535;
+        });
+    const PngFormat format{image.width(), image.height(), bitDepth,
+                           opaque ? PngColorType::Rgb : PngColorType::Rgba};
+    const size_t bytesPerPixel = size_t(pngChannels(format.colorType) * bitDepth / 8);
+    const Rgba* pixels = image.pixels().data();
+    const size_t pixelCount = image.pixels().size();
+    const auto samples =
+        quantisePixels(pixelCount, bytesPerPixel, [&](size_t begin, size_t end, uint8_t* out) {
+            if (bitDepth == 8 && opaque)
+                putPixels<8, false>(pixels + begin, end - begin, out);
+            else if (bitDepth == 8)
+                putPixels<8, true>(pixels + begin, end - begin, out);
+            else if (opaque)
+                putPixels<16, false>(pixels + begin, end - begin, out);
+            else
+                putPixels<16, true>(pixels + begin, end - begin, out);
+        });
+    return writePngBytes(format, {samples.get(), pixelCount * bytesPerPixel});
 }
 
 std::vector<uint8_t> encodeGrayPng16(const GrayImage& image) {
-    std::vector<uint8_t> samples(image.pixels().size() * 2);
-    uint8_t* out = samples.data();
-    for (float v : image.pixels())
-        out = putSample(out, v, 16);
-    return encodeSamples(image.width(), image.height(), 16, PNG_COLOR_TYPE_GRAY, samples);
+    const PngFormat format{image.width(), image.height(), 16, PngColorType::Gray};
+    const float* values = image.pixels().data();
+    const size_t pixelCount = image.pixels().size();
+    const auto samples = quantisePixels(pixelCount, 2, [&](size_t begin, size_t end, uint8_t* out) {
+        for (size_t i = begin; i < end; ++i)
+            out = putSample<16>(out, values[i]);
+    });
+    return writePngBytes(format, {samples.get(), pixelCount * 2});
 }
 
 void writePng(const std::string& path, const Image& image, int bitDepth) {

@@ -1,6 +1,7 @@
-// PNG files through libpng: RGBA images at 8 or 16 bits per channel, 16-bit gray depth passes,
-// and reading any PNG back as an Image. Encoding works to memory, so the same bytes can go to a
-// file (atomically, through AtomicFile) or over HTTP.
+// PNG files: RGBA (or RGB, when opaque) images at 8 or 16 bits per channel, 16-bit gray depth
+// passes, and reading any PNG back as an Image. Encoding works to memory with our own parallel
+// writer (png_writer.h), so the same bytes can go to a file (atomically, through AtomicFile) or
+// over HTTP; decoding goes through libpng.
 #pragma once
 
 #include <cstdint>
@@ -14,7 +15,9 @@ namespace quaternia {
 
 // RGBA, `bitDepth` 8 or 16 bits per channel (else std::invalid_argument). Each value is clamped
 // to [0, 1] (NaN counts as 0) and rounded: floor(v * 255 + 0.5), or floor(v * 65535 + 0.5).
-// The colour values are written as they are: they are display values already.
+// The colour values are written as they are: they are display values already. When every
+// alpha rounds to the maximum, the file is RGB (colour type 2) instead: it decodes the same.
+// The bytes depend on the image alone, not on the number of cores.
 std::vector<uint8_t> encodePng(const Image& image, int bitDepth);
 
 // One 16-bit gray channel, values clamped to [0, 1] and rounded as above.

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -226,6 +227,105 @@ TEST(PngIo, GrayDepthSixteenBitRoundTrips) {
         const float v = q16(expected[i]);
         expectPixel(decoded, i % 3, i / 3, {v, v, v, 1.0f});
     }
+}
+
+// ---- the writer through libpng's reader --------------------------------------------------
+
+// The documented rounding, written out again: clamp to [0, 1] (NaN to 0), floor(v * max + 0.5),
+// then the level as the decoder returns it (level / max, correctly rounded to float).
+float quantised(float v, int bits) {
+    const int maxValue = bits == 8 ? 255 : 65535;
+    if (!(v > 0.0f)) return 0.0f;
+    if (v >= 1.0f) return 1.0f;
+    const int level = int(std::floor(double(v) * maxValue + 0.5));
+    return bits == 8 ? q8(level) : q16(level);
+}
+
+// Smooth gradients with noise on top, some values outside [0, 1]; alpha all 1 when opaque,
+// else anything from 0 to 1.
+Image testImage(int width, int height, bool opaque, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> noise(-0.05f, 0.05f);
+    std::uniform_real_distribution<float> alpha(0.0f, 1.0f);
+    Image image(width, height);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const float u = float(x) / float(width), v = float(y) / float(height);
+            image.at(x, y) = Rgba{u + noise(rng), v + noise(rng), 1.02f * (u * v) + noise(rng),
+                                  opaque ? 1.0f : alpha(rng)};
+        }
+    }
+    return image;
+}
+
+TEST(PngIo, RoundTripsEverySizeDepthAndAlphaExactly) {
+    // 100 x 3000 crosses several of the writer's pieces (about 256 KiB of filtered rows each).
+    const int sizes[][2] = {{1, 1}, {3, 7}, {257, 129}, {100, 3000}};
+    unsigned seed = 1;
+    for (const auto& size : sizes) {
+        for (int bits : {8, 16}) {
+            for (bool opaque : {false, true}) {
+                SCOPED_TRACE(std::to_string(size[0]) + "x" + std::to_string(size[1]) + ", " +
+                             std::to_string(bits) + " bits, " + (opaque ? "opaque" : "alpha"));
+                Image image = testImage(size[0], size[1], opaque, seed++);
+                std::vector<uint8_t> png = encodePng(image, bits);
+                ASSERT_GT(png.size(), 33u);
+                EXPECT_EQ(png[24], bits) << "bit depth";
+                EXPECT_EQ(png[25], opaque ? 2 : 6) << "colour type";
+                Image decoded = decodePng(png);
+                ASSERT_EQ(decoded.width(), size[0]);
+                ASSERT_EQ(decoded.height(), size[1]);
+                int mismatches = 0;
+                for (size_t i = 0; i < image.pixels().size(); ++i) {
+                    const Rgba& in = image.pixels()[i];
+                    const Rgba expected{quantised(in.r, bits), quantised(in.g, bits),
+                                        quantised(in.b, bits), quantised(in.a, bits)};
+                    if (decoded.pixels()[i] != expected && mismatches++ < 5)
+                        ADD_FAILURE() << "pixel " << i;
+                }
+                EXPECT_EQ(mismatches, 0);
+            }
+        }
+    }
+}
+
+// Opaque means every alpha rounds to the maximum at the chosen depth: 0.999 is 255 at 8 bits
+// but 65469 at 16.
+TEST(PngIo, AlphaThatRoundsToTheMaximumCountsAsOpaque) {
+    Image image(2, 2);
+    for (int y = 0; y < 2; ++y) {
+        for (int x = 0; x < 2; ++x)
+            image.at(x, y) = Rgba{0.25f, 0.5f, 0.75f, x + y == 0 ? 0.999f : 1.0f};
+    }
+    std::vector<uint8_t> eight = encodePng(image, 8);
+    EXPECT_EQ(eight[25], 2);
+    EXPECT_EQ(decodePng(eight).at(0, 0), (Rgba{q8(64), q8(128), q8(191), 1.0f}));
+    std::vector<uint8_t> sixteen = encodePng(image, 16);
+    EXPECT_EQ(sixteen[25], 6);
+    EXPECT_EQ(decodePng(sixteen).at(0, 0).a, q16(65469));
+
+    image.at(1, 1).a = 0.99f;  // 252: not opaque even at 8 bits
+    EXPECT_EQ(encodePng(image, 8)[25], 6);
+}
+
+TEST(PngIo, GrayDepthRoundTripsAcrossPieces) {
+    GrayImage depth(300, 1000);  // 601 bytes a row: several pieces
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> value(-0.1f, 1.1f);
+    for (int y = 0; y < depth.height(); ++y) {
+        for (int x = 0; x < depth.width(); ++x)
+            depth.at(x, y) = (x % 50 == 0) ? value(rng) : float(x + y) / 1300.0f;
+    }
+    Image decoded = decodePng(encodeGrayPng16(depth));
+    int mismatches = 0;
+    for (int y = 0; y < depth.height(); ++y) {
+        for (int x = 0; x < depth.width(); ++x) {
+            const float v = quantised(depth.at(x, y), 16);
+            if (decoded.at(x, y) != Rgba{v, v, v, 1.0f} && mismatches++ < 5)
+                ADD_FAILURE() << "pixel (" << x << ", " << y << ")";
+        }
+    }
+    EXPECT_EQ(mismatches, 0);
 }
 
 // ---- decoding every kind of PNG --------------------------------------------------------
