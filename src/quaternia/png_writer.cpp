@@ -27,6 +27,10 @@ constexpr size_t kDictionaryBytes = size_t(32) << 10;
 // the Paeth filter is several times faster than the defaults (the adaptive filter search at
 // level 6) and makes files about 10% larger on renders.
 constexpr int kCompressionLevel = 1;
+// Run-length matches only (distance 1): Paeth-filtered renders are mostly runs of small
+// residuals, and on them Z_RLE made 1080p frames about 13% smaller than the default strategy at
+// the same speed (BM_EncodePng).
+constexpr int kStrategy = Z_RLE;
 constexpr int kMemLevel = 8;  // zlib's and libpng's default
 constexpr int kRawDeflateWindowBits = -15;
 // zlib's own header for a 32 KiB window and the fastest level (RFC 1950: CMF 0x78, FLG 0x01,
@@ -138,7 +142,7 @@ class RawDeflater {
   public:
     RawDeflater() {
         const int status = deflateInit2(&stream_, kCompressionLevel, Z_DEFLATED,
-                                        kRawDeflateWindowBits, kMemLevel, Z_DEFAULT_STRATEGY);
+                                        kRawDeflateWindowBits, kMemLevel, kStrategy);
         if (status == Z_MEM_ERROR) throw std::bad_alloc();
         if (status != Z_OK) throw std::runtime_error("cannot encode PNG: zlib cannot start");
     }
