@@ -380,14 +380,15 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
     }
 }
 
-// Fractal::estimate for a batch of points, lanes filled in order (the last chunk padded).
-template <bool kQuadratic, class D>
+// Fractal::estimate for a batch of points, lanes filled in order (the last chunk padded). With
+// kOrbit the whole PointEstimate; without, only the distance (0 inside) goes to store(begin,
+// count, distances).
+template <bool kQuadratic, bool kOrbit, class D, class Store>
 void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& points,
-                        std::vector<PointEstimate>& results, LaneCounters& counters) {
+                        LaneCounters& counters, const Store& store) {
     using T = hn::TFromD<D>;
     const LaneConstants<D> k(d, fractal);
     const size_t lanes = hn::Lanes(d);
-    results.assign(points.size(), PointEstimate{});
     LaneScratch<T> in, out;
     for (size_t begin = 0; begin < points.size(); begin += lanes) {
         size_t count = std::min(lanes, points.size() - begin);
@@ -396,23 +397,35 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
         QuaternionLanes<hn::Vec<D>> q[1] = {
             k.quaternionFromWorld(hn::Load(d, in.a), hn::Load(d, in.b), hn::Load(d, in.c))};
         LaneEstimate<D> estimates[1];
-        estimateLanes<kQuadratic, true>(d, k, q, live, estimates, counters);
+        estimateLanes<kQuadratic, kOrbit>(d, k, q, live, estimates, counters);
         const LaneEstimate<D>& e = estimates[0];
         counters.estimates += int64_t(count);
         hn::Store(e.distance, d, out.a);
-        hn::Store(hn::Sqrt(e.trapSquared), d, out.b);
-        hn::Store(e.iterations, d, out.c);
-        hn::Store(e.radiusSquared, d, out.kind);
-        hn::Store(hn::IfThenElseZero(e.inside, hn::Set(d, T(1))), d, in.kind);
-        for (size_t lane = 0; lane < count; ++lane) {
-            PointEstimate& r = results[begin + lane];
-            r.distance = out.a[lane];
-            r.trap = out.b[lane];
-            r.iterations = int(out.c[lane]);
-            r.radiusSquared = out.kind[lane];
-            r.inside = in.kind[lane] != T(0);
+        if constexpr (kOrbit) {
+            hn::Store(hn::Sqrt(e.trapSquared), d, out.b);
+            hn::Store(e.iterations, d, out.c);
+            hn::Store(e.radiusSquared, d, out.kind);
+            hn::Store(hn::IfThenElseZero(e.inside, hn::Set(d, T(1))), d, in.kind);
         }
+        store(begin, count, in, out);
     }
+}
+
+template <bool kQuadratic, class D>
+void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& points,
+                        std::vector<PointEstimate>& results, LaneCounters& counters) {
+    results.assign(points.size(), PointEstimate{});
+    estimatePointLanes<kQuadratic, true>(d, fractal, points, counters,
+                                         [&](size_t begin, size_t count, auto& in, auto& out) {
+                                             for (size_t lane = 0; lane < count; ++lane) {
+                                                 PointEstimate& r = results[begin + lane];
+                                                 r.distance = out.a[lane];
+                                                 r.trap = out.b[lane];
+                                                 r.iterations = int(out.c[lane]);
+                                                 r.radiusSquared = out.kind[lane];
+                                                 r.inside = in.kind[lane] != 0;
+                                             }
+                                         });
 }
 
 // Fractal::normal / JuliaSet::potentialGradient for a batch of points: the three tangents of
@@ -518,6 +531,16 @@ void EstimatePoints(const LaneFractal& fractal, const PointBatch& points,
         estimatePointLanes<quadratic()>(d, fractal, points, results, counters);
     });
 }
+void EstimateDistances(const LaneFractal& fractal, const PointBatch& points,
+                       std::vector<double>& distances, LaneCounters& counters) {
+    distances.assign(points.size(), 0.0);
+    run(fractal, [&](auto d, auto quadratic) {
+        estimatePointLanes<quadratic(), false>(
+            d, fractal, points, counters, [&](size_t begin, size_t count, auto&, auto& out) {
+                std::copy(out.a, out.a + count, distances.begin() + std::ptrdiff_t(begin));
+            });
+    });
+}
 void PotentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       const std::vector<int>& iterations, std::vector<Vector3d>& normals,
                       LaneCounters& counters) {
@@ -567,6 +590,7 @@ namespace quaternia {
 HWY_EXPORT(TraceCameraRays);
 HWY_EXPORT(TraceShadowRays);
 HWY_EXPORT(EstimatePoints);
+HWY_EXPORT(EstimateDistances);
 HWY_EXPORT(PotentialNormals);
 HWY_EXPORT(EncodeDisplay);
 HWY_EXPORT(TargetName);
@@ -582,6 +606,10 @@ void traceShadowRays(const LaneFractal& fractal, const ShadowMarch& march, const
 void estimatePoints(const LaneFractal& fractal, const PointBatch& points,
                     std::vector<PointEstimate>& results, LaneCounters& counters) {
     HWY_DYNAMIC_DISPATCH(EstimatePoints)(fractal, points, results, counters);
+}
+void estimateDistances(const LaneFractal& fractal, const PointBatch& points,
+                       std::vector<double>& distances, LaneCounters& counters) {
+    HWY_DYNAMIC_DISPATCH(EstimateDistances)(fractal, points, distances, counters);
 }
 void potentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       const std::vector<int>& iterations, std::vector<Vector3d>& normals,

@@ -114,6 +114,10 @@ struct PointEstimate {
 };
 void estimatePoints(const LaneFractal& fractal, const PointBatch& points,
                     std::vector<PointEstimate>& results, LaneCounters& counters);
+// Only the distances (0 inside), without the orbit: cheaper where the bailout certifies escape
+// (ambient occlusion needs no more).
+void estimateDistances(const LaneFractal& fractal, const PointBatch& points,
+                       std::vector<double>& distances, LaneCounters& counters);
 
 // Unit outward normals from the analytic gradient of |z_M|^2 (Fractal::normal), M = the
 // iterations of each point's estimate (maxIterations - 1 for points inside).

@@ -97,6 +97,36 @@ void expectEstimatesMatch(const Fractal& fractal, unsigned seed) {
     }
 }
 
+// Distances alone (ambient occlusion's query) take the loop without the orbit where the bailout
+// certifies escape, and the general one where it does not: both give the full estimate's
+// distance exactly, 0 inside.
+TEST(PacketKernels, DistancesAloneEqualTheFullEstimates) {
+    Scene certified = testing::referenceScene("case01_sqr_A");
+    Scene uncertified = certified;
+    uncertified.fractal.bailout = 1.2;  // below the escape radius, about 1.47
+    for (const Scene& scene : {certified, uncertified}) {
+        const Fractal fractal = Fractal::fromScene(scene);
+        const PointBatch points = randomPoints(2000, 1.6, 12);
+        for (Precision precision : {Precision::Double, Precision::Single}) {
+            auto lanes = LaneFractal::from(fractal, precision);
+            ASSERT_TRUE(lanes);
+            std::vector<PointEstimate> estimates;
+            std::vector<double> distances;
+            LaneCounters full, alone;
+            estimatePoints(*lanes, points, estimates, full);
+            estimateDistances(*lanes, points, distances, alone);
+            ASSERT_EQ(distances.size(), points.size());
+            EXPECT_EQ(alone.estimates, full.estimates);
+            int inside = 0;
+            for (size_t i = 0; i < points.size(); ++i) {
+                ASSERT_EQ(distances[i], estimates[i].distance) << "point " << i;
+                inside += estimates[i].inside;
+            }
+            EXPECT_GT(inside, 30);
+        }
+    }
+}
+
 TEST(PacketKernels, EstimatesMatchTheScalarReference) {
     expectEstimatesMatch(Fractal::fromScene(testing::referenceScene("case01_sqr_A")), 2);
     expectEstimatesMatch(Fractal::fromScene(testing::referenceScene("case08_cube_F")), 3);

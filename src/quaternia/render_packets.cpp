@@ -27,13 +27,15 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
         rays_.clear();
         rayPixel_.clear();
         for (int py = tile.y0; py < tile.y1; ++py) {
+            const double* blockRow =
+                blockStart_.data() + size_t((py - tile.y0) / kConeBlock * blocksAcross);
             for (int px = tile.x0; px < tile.x1; ++px) {
+                const double start = blockRow[(px - tile.x0) / kConeBlock];
+                if (start == std::numeric_limits<double>::infinity()) continue;  // cone missed
                 auto [sx, sy] = samplePosition(k, samples_, px, py);
                 Ray ray = camera_.generateRay(px + sx, py + sy);
                 auto interval = intersectSphere(ray, boundingRadius_);
                 if (!interval) continue;
-                const double start = blockStart_[size_t(
-                    ((py - tile.y0) / kConeBlock) * blocksAcross + (px - tile.x0) / kConeBlock)];
                 const double near = std::max(interval->tNear, start);
                 if (near > interval->tFar) continue;  // the cone found nothing on this ray
                 rays_.push(ray, near, interval->tFar);
@@ -162,7 +164,7 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
             for (int k = 1; k <= Shader::kOcclusionSamples; ++k)
                 occlusionPoints_.push(hits_[h].outside + normals_[h] * shader_.occlusionHeight(k));
         }
-        estimatePoints(lanes_, occlusionPoints_, occlusionEstimates_, stats.shading);
+        estimateDistances(lanes_, occlusionPoints_, occlusionDistances_, stats.shading);
     }
 
     colors_.resize(count);
@@ -185,12 +187,8 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
             sample.visibility = 1;  // no shadows, or the shadow ray leaves the bounding sphere
         }
         if (shader_.occlusionEnabled()) {
-            double distances[Shader::kOcclusionSamples];
-            for (int k = 0; k < Shader::kOcclusionSamples; ++k)
-                distances[k] =
-                    occlusionEstimates_[h * Shader::kOcclusionSamples + size_t(k)].distance;
-            sample.occlusion =
-                shader_.ambientFromOpenness(shader_.occlusionFromEstimates(distances));
+            sample.occlusion = shader_.ambientFromOpenness(shader_.occlusionFromEstimates(
+                occlusionDistances_.data() + h * Shader::kOcclusionSamples));
         }
         colors_[h] = shader_.light(sample, Ray{hits_[h].outside, hits_[h].direction});
     }

@@ -77,7 +77,7 @@ class PacketTileRenderer {
     std::vector<int> shadowHit_;
     std::vector<double> shadowVisibility_;
     PointBatch occlusionPoints_;
-    std::vector<PointEstimate> occlusionEstimates_;
+    std::vector<double> occlusionDistances_;
     std::vector<Color> colors_;
 };
 
