@@ -175,9 +175,11 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
         const PointEstimate& e = hitEstimates_[h];
         DistanceEstimate orbit;
         orbit.trap = e.trap;
-        orbit.smoothIteration =
-            e.inside ? lanes_.maxIterations
-                     : smoothEscapeCount(e.iterations, e.radiusSquared, lanes_.degree);
+        if (shader_.albedoUsesSmoothIteration()) {
+            orbit.smoothIteration =
+                e.inside ? lanes_.maxIterations
+                         : smoothEscapeCount(e.iterations, e.radiusSquared, lanes_.degree);
+        }
         sample.albedo = shader_.albedo(orbit);
         if (!(shader_.keyDiffuse(sample.normal) > 0)) {
             sample.visibility = 0;

@@ -40,6 +40,8 @@ class Shader {
     // 1 = open, 0 = fully occluded.
     double ambientOcclusion(const Point3d& p, const Vector3d& normal, ShadingStats& stats) const;
     Color albedo(const DistanceEstimate& estimate) const;
+    // Whether albedo() reads the estimate's smoothIteration (two logarithms to compute).
+    bool albedoUsesSmoothIteration() const { return settings_.coloring == Coloring::Iteration; }
 
     // The pieces both paths share. The key light's diffuse term (0 where it does not reach the
     // front of the surface, and no shadow ray is needed).
