@@ -55,7 +55,8 @@ PlaneImage renderSamples(const PlaneView& view, int samples, const PlaneRenderOp
                          const Sampler& sample) {
     PlaneImage result;
     result.image = Image(view.pixelWidth, view.pixelHeight);
-    const ParallelOptions parallel = imageParallelOptions(options);
+    const ParallelOptions parallel =
+        imageParallelOptions(options, view.pixelWidth, view.pixelHeight);
     auto start = std::chrono::steady_clock::now();
     result.completed =
         parallelForTiles(view.pixelWidth, view.pixelHeight, parallel, [&](const Tile& tile, int) {

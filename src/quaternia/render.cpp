@@ -53,10 +53,11 @@ std::array<double, 2> samplePosition(int k, int n, int px, int py) {
     return {(k % columns + jx) / columns, (k / columns + jy) / rows};
 }
 
-ParallelOptions imageParallelOptions(const WorkOptions& options) {
+ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int height) {
     ParallelOptions parallel;
     parallel.threads = resolveThreadCount(options.threads);
-    parallel.tileSize = 16;
+    const int64_t largeTiles = int64_t((width + 31) / 32) * int64_t((height + 31) / 32);
+    parallel.tileSize = largeTiles >= kMinimumLargeTiles ? 32 : 16;
     parallel.cancel = options.cancel;
     if (options.progress) {
         parallel.progress = [progress = options.progress](int64_t done, int64_t total) {
@@ -82,7 +83,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     result.image = Image(settings.width, settings.height);
     if (options.depth) result.depth = GrayImage(settings.width, settings.height);
 
-    const ParallelOptions parallel = imageParallelOptions(options);
+    const ParallelOptions parallel = imageParallelOptions(options, settings.width, settings.height);
     std::vector<ThreadTotals> totals(parallel.threads);
     const int samples = settings.samples;
 

@@ -49,9 +49,14 @@ struct RenderResult {
 // Validates the scene (throws UserError naming the bad key) before any work starts.
 RenderResult render(const Scene& scene, const RenderOptions& options = {});
 
-// The parallel-for settings of an image: 16-pixel tiles, the options' threads resolved, their
-// cancel flag, and their progress (if set) called with the fraction of tiles done.
-ParallelOptions imageParallelOptions(const WorkOptions& options);
+// The parallel-for settings of a width x height image: the options' threads resolved, their
+// cancel flag, their progress (if set) called with the fraction of tiles done, and square tiles
+// of 32 pixels where the image has at least kMinimumLargeTiles of them, else 16. Large tiles
+// make long batches for the SIMD path (each batch ends with lanes idling while its last rays
+// finish); small images need the small tiles to keep every thread busy. The size depends on
+// the image alone, so the picture is the same for any number of threads.
+inline constexpr int64_t kMinimumLargeTiles = 128;
+ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int height);
 
 // Sample k of n within a pixel, in [0, 1)^2: a stratified grid jittered by a hash of the pixel,
 // so images are reproducible; the single sample is the pixel centre.

@@ -17,6 +17,32 @@ using testing::referenceScene;
 using testing::unitBallScene;
 
 // With one sample a pixel is hit or not: alpha is exactly 0 or 1 (0 or 255 in the PNG).
+// Tiles: 32 pixels where the image has enough of them, 16 for small images (explorer
+// previews), whatever the thread count, so the picture does not depend on it.
+TEST(Render, TileSizeFollowsTheImageNotTheThreads) {
+    for (int threads : {1, 2, 64}) {
+        WorkOptions work;
+        work.threads = threads;
+        EXPECT_EQ(imageParallelOptions(work, 1920, 1080).tileSize, 32);
+        EXPECT_EQ(imageParallelOptions(work, 640, 360).tileSize, 32);
+        EXPECT_EQ(imageParallelOptions(work, 160, 90).tileSize, 16);
+        EXPECT_EQ(imageParallelOptions(work, 1, 2000).tileSize, 16);
+        EXPECT_EQ(imageParallelOptions(work, 640, 360).threads, threads);
+    }
+}
+
+// The same picture with 1 and 2 threads (tiles are handed out in a different order).
+TEST(Render, ThreadCountDoesNotChangeThePicture) {
+    Scene scene = defaultScene();
+    scene.render.width = 96;
+    scene.render.height = 64;
+    scene.render.samples = 1;
+    RenderOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    EXPECT_TRUE(render(scene, one).image.pixels() == render(scene, two).image.pixels());
+}
+
 TEST(Render, SingleSampleAlphaIsBinary) {
     RenderResult result = render(unitBallScene(48, 36));
     int covered = 0;
