@@ -21,9 +21,11 @@ struct QuaternionLanes {
     V w, x, y, z;
 };
 
+// Summed as a tree, (w^2 + x^2) + (y^2 + z^2): the iteration loops are bound by the latency of
+// this chain, which a left-to-right sum makes one multiply-add longer.
 template <class V>
 inline V normSquaredLanes(const QuaternionLanes<V>& q) {
-    return q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+    return (q.w * q.w + q.x * q.x) + (q.y * q.y + q.z * q.z);
 }
 
 template <class V>
@@ -45,8 +47,8 @@ template <class V>
 inline QuaternionLanes<V> quadraticStepLanes(const QuaternionLanes<V>& z, V scale,
                                              const QuaternionLanes<V>& c) {
     V twoScaleW = (scale + scale) * z.w;
-    return {scale * (z.w * z.w - z.x * z.x - z.y * z.y - z.z * z.z) + c.w, twoScaleW * z.x + c.x,
-            twoScaleW * z.y + c.y, twoScaleW * z.z + c.z};
+    return {scale * ((z.w * z.w - z.x * z.x) - (z.y * z.y + z.z * z.z)) + c.w,
+            twoScaleW * z.x + c.x, twoScaleW * z.y + c.y, twoScaleW * z.z + c.z};
 }
 
 // s z^d + c for d >= 1, by d - 1 Hamilton products.
