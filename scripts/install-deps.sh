@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   g++ cmake ninja-build pkg-config
-  libpng-dev libtomlplusplus-dev libcli11-dev libhwy-dev
+  libpng-dev zlib1g-dev libtomlplusplus-dev libcli11-dev libhwy-dev
   libgtest-dev libbenchmark-dev
   admesh
   libcpp-httplib-dev chromium

@@ -31,18 +31,6 @@ TEST(Render, TileSizeFollowsTheImageNotTheThreads) {
     }
 }
 
-// The same picture with 1 and 2 threads (tiles are handed out in a different order).
-TEST(Render, ThreadCountDoesNotChangeThePicture) {
-    Scene scene = defaultScene();
-    scene.render.width = 96;
-    scene.render.height = 64;
-    scene.render.samples = 1;
-    RenderOptions one, two;
-    one.threads = 1;
-    two.threads = 2;
-    EXPECT_TRUE(render(scene, one).image.pixels() == render(scene, two).image.pixels());
-}
-
 TEST(Render, SingleSampleAlphaIsBinary) {
     RenderResult result = render(unitBallScene(48, 36));
     int covered = 0;
