@@ -26,6 +26,15 @@ class Camera {
         double y0 = 0.5 - y / height_;
         return Ray{position_, normalize(direction_ + right_ * x0 + up_ * y0)};
     }
+    // The unnormalised directions of the pixel centres of row py: first + px * step for pixel
+    // px (generateRay's direction before normalisation), for work done a row at a time.
+    struct RowDirections {
+        Vector3d first, step;
+    };
+    RowDirections rowDirections(int py) const {
+        const double y0 = 0.5 - (py + 0.5) / height_;
+        return {direction_ + up_ * y0 + right_ * (0.5 / width_ - 0.5), right_ / double(width_)};
+    }
     // The inverse: the image point (x, y) whose ray passes through p, or nullopt when p is not
     // in front of the camera. For drawing geometry (a mesh's silhouette) in the same picture.
     std::optional<std::array<double, 2>> project(const Point3d& p) const;

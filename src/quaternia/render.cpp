@@ -94,22 +94,21 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     result.stats.engine = lanes ? laneTargetName() : "scalar";
 
     // A pixel's samples to its linear colour and alpha (and its depth): the same for both paths.
-    // The background, seen through the pixel centre, only where some sample missed.
-    auto finishPixel = [&](int px, int py, const PixelSamples& samplesOfPixel) {
+    // The background (seen through the pixel centre) is read only where some sample missed.
+    const bool opaque = settings.alpha == AlphaMode::Opaque;
+    auto finishPixel = [&](int px, int py, const PixelSamples& samplesOfPixel,
+                           const Color& background) {
         const int hits = samplesOfPixel.hits;
         double coverage = double(hits) / samples;
         Color color;
         if (hits == samples) {
             color = samplesOfPixel.sum / double(samples);
+        } else if (opaque) {
+            color = samplesOfPixel.sum / double(samples) + background * (1 - coverage);
         } else {
-            const Color background = shader.background(camera.generateRay(px + 0.5, py + 0.5));
-            if (settings.alpha == AlphaMode::Opaque) {
-                color = samplesOfPixel.sum / double(samples) + background * (1 - coverage);
-            } else {
-                color = hits > 0 ? samplesOfPixel.sum / double(hits) : background;
-            }
+            color = hits > 0 ? samplesOfPixel.sum / double(hits) : background;
         }
-        if (settings.alpha == AlphaMode::Opaque) coverage = 1;
+        if (opaque) coverage = 1;
         if (options.depth) {
             double depth = hits > 0 ? (samplesOfPixel.depthSum / hits - depthNear) / depthRange : 1;
             result.depth.at(px, py) = float(std::clamp(depth, 0.0, 1.0));
@@ -135,7 +134,10 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         stats.shadingEstimates += shading.estimates;
         stats.rays += samples;
         stats.hits += pixel.hits;
-        Rgba linear = finishPixel(px, py, pixel);
+        const Color background = pixel.hits < samples
+                                     ? shader.background(camera.generateRay(px + 0.5, py + 0.5))
+                                     : Color();
+        Rgba linear = finishPixel(px, py, pixel, background);
         Color display = shader.toDisplay(Color(linear.r, linear.g, linear.b));
         result.image.at(px, py) =
             Rgba{float(display.x), float(display.y), float(display.z), linear.a};
@@ -154,17 +156,22 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         stats.shadingEstimates += tileStats.shading.estimates;
         stats.laneIterations += tileStats.camera.laneIterations + tileStats.shading.laneIterations;
         stats.laneSlots += tileStats.camera.laneSlots + tileStats.shading.laneSlots;
-        // The tile's linear colours in place, then display-encoded together (SIMD).
+        // Each row of the tile: the background first (float, vectorised), which is what a pixel
+        // without hits shows, then the pixels with hits, then display encoding (SIMD) in place.
         const int width = tile.x1 - tile.x0;
         const PixelSamples* pixel = thread.pixels.data();
         for (int py = tile.y0; py < tile.y1; ++py) {
             Rgba* row = &result.image.at(tile.x0, py);
-            for (int px = tile.x0; px < tile.x1; ++px, ++pixel) {
+            const Camera::RowDirections directions = camera.rowDirections(py);
+            shader.backgroundRow(directions.first, directions.step, tile.x0, width,
+                                 opaque ? 1.0f : 0.0f, row);
+            for (int i = 0; i < width; ++i, ++pixel) {
+                if (pixel->hits == 0 && !options.depth) continue;
                 stats.hits += pixel->hits;
-                *row++ = finishPixel(px, py, *pixel);
+                row[i] = finishPixel(tile.x0 + i, py, *pixel, Color(row[i].r, row[i].g, row[i].b));
             }
             // Rgba is four floats: the row's colour channels encode in place, alpha kept.
-            shader.toDisplay(row - width, size_t(width));
+            shader.toDisplay(row, size_t(width));
         }
         stats.rays += int64_t(samples) * int64_t(thread.pixels.size());
     };

@@ -107,7 +107,7 @@ void PacketTileRenderer::marchCones(const Tile& tile, PacketTileStats& stats) {
     }
     CameraMarch coneMarch = march_;
     coneMarch.cone = true;
-    coneMarch.epsilon = 2;
+    coneMarch.epsilon = 1.5;  // 2 took 9% more steps of the pixel rays after the cones
     coneMarch.pixelAngle = ratio;
     traceCameraRays(lanes_, coneMarch, cones_, coneResults_, stats.camera);
     for (size_t i = 0; i < coneResults_.size(); ++i) {

@@ -158,6 +158,24 @@ Color Shader::background(const Ray& ray) const {
     return lerp(settings_.backgroundBottom, settings_.backgroundTop, v);
 }
 
+void Shader::backgroundRow(const Vector3d& first, const Vector3d& step, int x0, int count,
+                           float alpha, Rgba* out) const {
+    // The direction's y and its length, as background() takes them from the normalised ray.
+    const float ax = float(first.x), ay = float(first.y), az = float(first.z);
+    const float bx = float(step.x), by = float(step.y), bz = float(step.z);
+    const Color& bottom = settings_.backgroundBottom;
+    const Color& top = settings_.backgroundTop;
+    const float r0 = float(bottom.x), g0 = float(bottom.y), b0 = float(bottom.z);
+    const float dr = float(top.x - bottom.x), dg = float(top.y - bottom.y),
+                db = float(top.z - bottom.z);
+    for (int i = 0; i < count; ++i) {
+        const float px = float(x0 + i);
+        const float x = ax + px * bx, y = ay + px * by, z = az + px * bz;
+        const float v = 0.5f + 0.5f * y / std::sqrt(x * x + y * y + z * z);
+        out[i] = Rgba{r0 + v * dr, g0 + v * dg, b0 + v * db, alpha};
+    }
+}
+
 void Shader::toDisplay(Rgba* pixels, size_t count) const {
     static_assert(sizeof(Rgba) == 4 * sizeof(float), "Rgba is four packed floats");
     encodeDisplay(&pixels->r, count, float(settings_.exposure), float(1.0 / settings_.gamma));

@@ -35,6 +35,10 @@ class Shader {
     Color shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats) const;
     // The background seen along a ray that misses: a vertical gradient.
     Color background(const Ray& ray) const;
+    // background() for the pixel centres px = x0 .. x0 + count - 1 of one camera row
+    // (Camera::rowDirections), in float, with the given alpha: a loop the compiler vectorises.
+    void backgroundRow(const Vector3d& first, const Vector3d& step, int x0, int count, float alpha,
+                       Rgba* out) const;
     // Visibility of the key light from p in [0, 1] (1 = lit).
     double shadow(const Point3d& p, ShadingStats& stats) const;
     // 1 = open, 0 = fully occluded.
