@@ -36,10 +36,12 @@ struct RayLanes {
     QUATERNIA_LANE_ARRAY(T, confirming);
     QUATERNIA_LANE_ARRAY(T, steps);
     QUATERNIA_LANE_ARRAY(T, live);
-    // Over-relaxed marching (shadow rays): the last ball's radius, the last step, the factor.
+    // Over-relaxed marching: the last ball's radius and the last step (camera rays: the relaxed
+    // step, 0 where it was plain), the factor (shadow rays), the plain step (camera rays).
     QUATERNIA_LANE_ARRAY(T, radius);
     QUATERNIA_LANE_ARRAY(T, lastStep);
     QUATERNIA_LANE_ARRAY(T, relaxation);
+    QUATERNIA_LANE_ARRAY(T, plainStep);
     int64_t ray[kLaneCapacity<T>] = {};
 
     // Puts ray `next` of the batch into `lane` (and advances next), or empties the lane when the
@@ -62,7 +64,7 @@ struct RayLanes {
         tFar[lane] = T(rays.tFar[i]);
         confirming[lane] = startAtZero ? T(1) : T(0);
         steps[lane] = T(0);
-        radius[lane] = lastStep[lane] = T(0);
+        radius[lane] = lastStep[lane] = plainStep[lane] = T(0);
         relaxation[lane] = relax;
     }
 };

@@ -6,6 +6,7 @@
 namespace quaternia {
 
 MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
+    // Steps are over-relaxed (kMarchRelaxation, march.h) and checked against the plain step.
     // Once the estimate is below epsilon the ray is within about two epsilons of K_N (the
     // estimate is at least half the true distance near the set). Rather than stop on that offset
     // surface, which fattens dust and thin filaments, confirm: keep stepping by the estimate but
@@ -17,12 +18,21 @@ MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSetti
     if (!interval) return result;
     double t = interval->tNear;
     double tOutside = t;
+    double radius = 0;       // the estimate at tOutside
+    double plainStep = 0;    // the plain step from tOutside
+    double relaxedStep = 0;  // the step taken from tOutside where it was longer, else 0
     int confirming = 0;
     while (t <= interval->tFar && result.steps < settings.maxSteps) {
         Point3d p = ray.at(t);
         DistanceEstimate e = fractal.estimate(p);
         ++result.steps;
         result.iterations += e.iterations;
+        if (relaxedStep > plainStep + e.distance) {
+            // This ball does not reach back to the plain step's end: take the plain step.
+            t = tOutside + plainStep;
+            relaxedStep = 0;
+            continue;
+        }
         if (e.inside) {
             Point3d outside = ray.at(tOutside);
             result.hit = Hit{t, p, outside, fractal.estimate(outside)};
@@ -35,8 +45,15 @@ MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSetti
             result.hit = Hit{t, p, p, e};
             return result;
         }
+        const double plain =
+            confirming ? std::max(e.distance, kMarchConfirmStep * footprint) : e.distance;
+        const double relaxed =
+            relaxedMarchStep(settings.relaxation, t, tOutside, radius, e.distance);
+        relaxedStep = relaxed > plain && relaxed + t <= interval->tFar ? relaxed : 0;
         tOutside = t;
-        t += confirming ? std::max(e.distance, kMarchConfirmStep * footprint) : e.distance;
+        radius = e.distance;
+        plainStep = plain;
+        t += relaxedStep > 0 ? relaxedStep : plain;
     }
     return result;
 }

@@ -41,12 +41,31 @@ inline std::optional<RayInterval> intersectSphere(const Ray& ray, double radius)
 inline constexpr double kMarchConfirmStep = 0.05;
 inline constexpr int kMarchConfirmBudget = 48;
 
+// Over-relaxed steps before confirmation (after Keinert et al. 2014, "Enhanced sphere tracing",
+// with the factor of Balint and Valasek 2018): along a ray the estimate falls almost linearly
+// towards the surface, at a slope (radius - distance) / step seen between consecutive points;
+// if the surface were a plane at that slope, a step of 2 / (1 + slope) estimates would just
+// keep the two balls touching. kMarchRelaxation (< 2) leaves a margin. Where the far point's
+// ball does not reach back to the end of the plain step (the estimate, or in confirmation at
+// least kMarchConfirmStep footprints), the set may lie between them: the march drops the far
+// point and takes the plain step instead, so it crosses nothing that plain steps would not.
+// The length of the step from a point at t whose
+// estimate is `distance`, the point before being at tPrevious with estimate `radius`:
+inline constexpr double kMarchRelaxation = 1.8;  // the default of render.relaxation
+inline double relaxedMarchStep(double relaxation, double t, double tPrevious, double radius,
+                               double distance) {
+    if (!(t > tPrevious && radius > 0)) return distance;
+    const double slope = std::max(0.0, (radius - distance) / (t - tPrevious));
+    return std::max(1.0, relaxation / (1.0 + slope)) * distance;
+}
+
 struct MarchSettings {
     MarchMethod method = MarchMethod::SphereTracing;
     double step = 0.002;       // fixed-step delta
     double epsilon = 0.25;     // in pixel footprints
     double pixelAngle = 1e-3;  // footprint per unit of t: Camera::pixelFootprint(1)
     int maxSteps = 5000;
+    double relaxation = kMarchRelaxation;  // 1: plain sphere tracing
 };
 
 struct Hit {

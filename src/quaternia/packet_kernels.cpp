@@ -227,6 +227,15 @@ HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes
     return true;
 }
 
+// relaxedMarchStep (march.h) in lanes, written the same way so that double lanes round alike.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V relaxedLength(D d, V relaxation, V t, V tPrevious, V radius, V distance) {
+    const V one = hn::Set(d, hn::TFromD<D>(1));
+    const V slope = hn::Max(hn::Zero(d), (radius - distance) / (t - tPrevious));
+    const V factor = hn::Max(one, relaxation / (one + slope));
+    return hn::IfThenElse(hn::And(t > tPrevious, radius > hn::Zero(d)), factor, one) * distance;
+}
+
 // sphereTrace (march.cpp) for a batch of camera rays, kLaneGroups vectors of rays at a time.
 template <bool kQuadratic, class D>
 void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
@@ -252,6 +261,9 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
     const V confirmBudget = hn::Set(d, T(march.cone ? 0 : kMarchConfirmBudget));
     const V coneShrink = march.cone ? one : zero;
     const V maxSteps = hn::Set(d, T(march.maxSteps));
+    // Cones step plainly (their steps are already short of the estimate).
+    const V relaxation = hn::Set(d, T(march.relaxation));
+    const M relaxing = hn::FirstN(d, march.cone || !(march.relaxation > 1) ? 0 : hn::Lanes(d));
     for (;;) {
         M live[K];
         V t[K];
@@ -262,20 +274,38 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
         for (size_t j = 0; j < K; ++j) {
             const size_t o = j * lanes;
             const V footprint = pixelAngle * t[j];
-            V confirming = hn::IfThenElseZero(e[j].distance < epsilon * footprint,
-                                              hn::Load(d, s.confirming + o) + one);
+            const V distance = e[j].distance;
+            // The point before (tOutside), its estimate (radius), its plain step and the step
+            // taken from it if that was longer (lastStep, else 0): where the plain step and this
+            // point's ball leave a gap, the set may lie in it, so this point's estimate is dropped
+            // and the ray goes back to the plain step (sphereTrace).
+            const V tPrevious = hn::Load(d, s.tOutside + o);
+            const V radius = hn::Load(d, s.radius + o);
+            const V relaxedStep = hn::Load(d, s.lastStep + o);
+            const V plainPrevious = hn::Load(d, s.plainStep + o);
+            const auto gap = hn::And(live[j], relaxedStep > plainPrevious + distance);
+            const V loadedConfirming = hn::Load(d, s.confirming + o);
+            V confirming = hn::IfThenElse(
+                gap, loadedConfirming,
+                hn::IfThenElseZero(distance < epsilon * footprint, loadedConfirming + one));
             const V steps = hn::Load(d, s.steps + o) + one;
-            auto insideHit = hn::And(live[j], e[j].inside);
-            auto grazing = hn::AndNot(e[j].inside, hn::And(live[j], confirming > confirmBudget));
-            V step = hn::IfThenElse(confirming > zero,
-                                    hn::Max(e[j].distance, hn::Set(d, kConfirmStep) * footprint),
-                                    hn::NegMulAdd(coneShrink, footprint, e[j].distance));
-            const V tNext = t[j] + step;
+            auto insideHit = hn::AndNot(gap, hn::And(live[j], e[j].inside));
+            auto grazing =
+                hn::AndNot(hn::Or(gap, e[j].inside), hn::And(live[j], confirming > confirmBudget));
+            const V tFar = hn::Load(d, s.tFar + o);
+            const V relaxed = relaxedLength(d, relaxation, t[j], tPrevious, radius, distance);
+            const V plain = hn::IfThenElse(confirming > zero,
+                                           hn::Max(distance, hn::Set(d, kConfirmStep) * footprint),
+                                           hn::NegMulAdd(coneShrink, footprint, distance));
+            const auto relax = hn::And(relaxing, hn::And(relaxed > plain, relaxed + t[j] <= tFar));
+            V step = hn::IfThenElse(relax, relaxed, plain);
+            step = hn::IfThenElse(gap, plainPrevious, step);
+            const V tNext = hn::IfThenElse(gap, tPrevious, t[j]) + step;
             auto ended = hn::Or(insideHit, grazing);
-            auto missed = hn::AndNot(ended, hn::And(live[j], hn::Or(tNext > hn::Load(d, s.tFar + o),
-                                                                    steps >= maxSteps)));
+            auto missed =
+                hn::AndNot(ended, hn::And(live[j], hn::Or(tNext > tFar, steps >= maxSteps)));
             hn::Store(t[j], d, finished.a + o);
-            hn::Store(hn::Load(d, s.tOutside + o), d, finished.b + o);
+            hn::Store(tPrevious, d, finished.b + o);
             hn::Store(steps, d, finished.c + o);
             hn::Store(hn::IfThenElseZero(insideHit, one) +
                           hn::IfThenElseZero(grazing, hn::Set(d, T(2))) +
@@ -283,7 +313,10 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
                       d, finished.kind + o);
             anyDone = anyDone || !hn::AllFalse(d, hn::Or(ended, missed));
             hn::Store(tNext, d, s.t + o);
-            hn::Store(t[j], d, s.tOutside + o);
+            hn::Store(hn::IfThenElse(gap, tPrevious, t[j]), d, s.tOutside + o);
+            hn::Store(hn::IfThenElse(gap, radius, distance), d, s.radius + o);
+            hn::Store(hn::IfThenElse(gap, plainPrevious, plain), d, s.plainStep + o);
+            hn::Store(hn::IfThenElseZero(hn::AndNot(gap, relax), relaxed), d, s.lastStep + o);
             hn::Store(confirming, d, s.confirming + o);
             hn::Store(steps, d, s.steps + o);
         }

@@ -74,6 +74,7 @@ struct CameraMarch {
     double epsilon = 0.25;     // in pixel footprints
     double pixelAngle = 1e-3;  // footprint per unit of t
     int maxSteps = 5000;
+    double relaxation = 1;  // sphereTrace's over-relaxation (march.h); ignored by cones
     // Cone marching: each ray stands for a cone of radius pixelAngle * t about it, steps by the
     // estimate less that radius (so the ball of the estimate covers the cone's next stretch),
     // and ends (Grazing) as soon as the estimate is below epsilon radii (epsilon > 1, so that

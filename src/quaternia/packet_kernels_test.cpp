@@ -191,9 +191,10 @@ TEST(PacketKernels, CameraRaysEndWhereSphereTracingEnds) {
     }
     std::vector<TraceResult> results;
     LaneCounters counters;
-    traceCameraRays(*LaneFractal::from(fractal, Precision::Double),
-                    CameraMarch{settings.epsilon, settings.pixelAngle, settings.maxSteps}, rays,
-                    results, counters);
+    traceCameraRays(
+        *LaneFractal::from(fractal, Precision::Double),
+        CameraMarch{settings.epsilon, settings.pixelAngle, settings.maxSteps, settings.relaxation},
+        rays, results, counters);
     int hits = 0;
     for (size_t i = 0; i < kept.size(); ++i) {
         MarchResult reference = sphereTrace(fractal, kept[i], settings);

@@ -190,6 +190,10 @@ std::vector<Parameter> buildParameterTable() {
         realParameter("render", "epsilon", &S::render, &R::epsilon, 0.25, 1e-4, 10,
                       "Sphere tracing stops where the distance estimate is below epsilon times "
                       "the pixel footprint"),
+        realParameter("render", "relaxation", &S::render, &R::relaxation, 1.8, 1, 1.95,
+                      "Sphere tracing's over-relaxation: steps of up to this many estimates, "
+                      "checked against the plain step and taken back where they could skip "
+                      "anything; 1 steps plainly"),
         integerParameter("render", "max_steps", &S::render, &R::maxSteps, 5000, 1, 10000000,
                          "Most marching steps along one ray, for either marcher"),
         integerParameter("render", "bit_depth", &S::render, &R::bitDepth, 8, 8, 16,

@@ -73,8 +73,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     const RenderSettings& settings = scene.render;
     const Camera camera(scene.camera, settings.width, settings.height);
     const Shader shader(scene.shading, fractal);
-    const MarchSettings marchSettings{settings.method, settings.step, settings.epsilon,
-                                      camera.pixelFootprint(1.0), settings.maxSteps};
+    const MarchSettings marchSettings{settings.method,   settings.step,
+                                      settings.epsilon,  camera.pixelFootprint(1.0),
+                                      settings.maxSteps, settings.relaxation};
     const double cameraDistance = length(scene.camera.position);
     const double depthNear = std::max(0.0, cameraDistance - fractal.boundingRadius());
     const double depthRange = cameraDistance + fractal.boundingRadius() - depthNear;

@@ -13,7 +13,7 @@ PacketTileRenderer::PacketTileRenderer(const LaneFractal& lanes, const Camera& c
     : lanes_(lanes),
       camera_(camera),
       shader_(shader),
-      march_{march.epsilon, march.pixelAngle, march.maxSteps},
+      march_{march.epsilon, march.pixelAngle, march.maxSteps, march.relaxation},
       samples_(samples),
       boundingRadius_(std::sqrt(lanes.bailoutSquared)) {}
 

@@ -51,10 +51,11 @@ struct RenderSettings {
     int width = 0, height = 0;
     int samples = 0;  // per pixel, stratified
     MarchMethod method = MarchMethod::SphereTracing;
-    double step = 0;     // fixed-step delta (Algorithm 2), world units
-    double epsilon = 0;  // sphere tracing stops at epsilon * pixel footprint at distance t
-    int maxSteps = 0;    // per ray, for either marcher
-    int bitDepth = 0;    // 8 or 16 bits per PNG channel
+    double step = 0;        // fixed-step delta (Algorithm 2), world units
+    double epsilon = 0;     // sphere tracing stops at epsilon * pixel footprint at distance t
+    int maxSteps = 0;       // per ray, for either marcher
+    double relaxation = 0;  // sphere tracing's over-relaxation (kMarchRelaxation); 1 = plain
+    int bitDepth = 0;       // 8 or 16 bits per PNG channel
     AlphaMode alpha = AlphaMode::Coverage;
     RenderEngine engine = RenderEngine::Simd;
     Precision precision = Precision::Single;
