@@ -373,7 +373,7 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
         for (size_t j = 0; j < K; ++j) {
             const size_t o = j * lanes;
             // Over-relaxation as Shader::shadow: where the balls of this point and the last do
-            // not overlap, go back to the plain step and stay plain.
+            // not overlap, go back to the plain step, then relax again.
             const V radius = hn::Load(d, s.radius + o), lastStep = hn::Load(d, s.lastStep + o);
             V relaxation = hn::Load(d, s.relaxation + o);
             const auto gap =
@@ -391,7 +391,8 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
             const V tNext = hn::IfThenElse(gap, t[j] + radius - lastStep, t[j] + step);
             hn::Store(hn::IfThenElse(gap, radius, newRadius), d, s.radius + o);
             hn::Store(step, d, s.lastStep + o);
-            hn::Store(hn::IfThenElse(gap, one, relaxation), d, s.relaxation + o);
+            hn::Store(hn::IfThenElse(gap, one, hn::Set(d, T(march.relaxation))), d,
+                      s.relaxation + o);
             const V steps = hn::Load(d, s.steps + o) + one;
             auto cleared = hn::AndNot(
                 blocked,

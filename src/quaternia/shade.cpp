@@ -24,7 +24,19 @@ Shader::Shader(const ShadingSettings& settings, const Fractal& fractal)
       lightDirection_(normalize(settings.lightDirection)),
       fillDirection_(normalize(settings.fillDirection)),
       // Occlusion is probed over a few percent of the object's size: the scale of its folds.
-      occlusionStep_(0.025 * fractal.boundingRadius()) {}
+      occlusionStep_(0.025 * fractal.boundingRadius()),
+      highlightCutoff_(std::pow(1e-7, 1 / std::max(settings.shininess, 1e-3))) {
+    // Weights 0.7^(k-1), normalised.
+    double weight = 1, weights = 0;
+    for (int k = 1; k <= kOcclusionSamples; ++k) {
+        occlusionScale_[k - 1] = 2 / occlusionHeight(k);
+        occlusionWeight_[k - 1] = weight;
+        weights += weight;
+        weight *= 0.7;
+    }
+    for (double& w : occlusionWeight_)
+        w /= weights;
+}
 
 double Shader::shadowMinimumStep() const {
     return 1e-4 * fractal_.boundingRadius();
@@ -45,7 +57,7 @@ double Shader::shadow(const Point3d& p, ShadingStats& stats) const {
     double t = 0;
     // Over-relaxed sphere tracing (Keinert et al. 2014): steps of kShadowRelaxation times the
     // estimate while the balls of consecutive points overlap; where they do not, the step may
-    // have jumped over the set, so go back to the plain step and stay plain.
+    // have jumped over the set, so go back to the plain step, then relax again.
     double relaxation = kShadowRelaxation, radius = 0, step = 0;
     for (int steps = 0; steps < kShadowSteps && t < interval->tFar; ++steps) {
         DistanceEstimate e = fractal_.estimate(ray.at(t));
@@ -63,6 +75,7 @@ double Shader::shadow(const Point3d& p, ShadingStats& stats) const {
             visibility = std::min(visibility, settings_.shadowSoftness * e.distance / t);
         radius = std::max(e.distance, minimumStep);
         step = relaxation * radius;
+        relaxation = kShadowRelaxation;
         t += step;
     }
     return visibilityFromMarch(soft ? visibility : 1);
@@ -83,13 +96,11 @@ double Shader::ambientOcclusion(const Point3d& p, const Vector3d& normal,
 double Shader::occlusionFromEstimates(const double* distances) const {
     // Compare the estimate at a few heights h above the surface with h itself. The estimate
     // runs at 0.5 to 1 times the true distance near the set, so a ratio of 0.5 counts as open.
-    double open = 0, weights = 0, weight = 1;
-    for (int k = 1; k <= kOcclusionSamples; ++k) {
-        open += weight * clamp01(2 * distances[k - 1] / occlusionHeight(k));
-        weights += weight;
-        weight *= 0.7;
-    }
-    return open / weights;
+    // The weights fall by 0.7 per sample (occlusionWeight_), and sum to 1.
+    double open = 0;
+    for (int k = 0; k < kOcclusionSamples; ++k)
+        open += occlusionWeight_[k] * clamp01(distances[k] * occlusionScale_[k]);
+    return open;
 }
 
 double Shader::ambientFromOpenness(double open) const {
@@ -141,8 +152,10 @@ Color Shader::light(const SurfaceSample& sample, const Ray& ray) const {
     const Vector3d& n = sample.normal;
     const double key = keyDiffuse(n);
     Vector3d halfway = normalize(lightDirection_ - ray.direction);
-    double highlight =
-        key > 0 ? std::pow(float(std::max(0.0, dot(n, halfway))), float(settings_.shininess)) : 0;
+    const double cosine = dot(n, halfway);
+    double highlight = key > 0 && cosine > highlightCutoff_
+                           ? std::pow(float(cosine), float(settings_.shininess))
+                           : 0;
     double fillDiffuse = std::max(0.0, dot(n, fillDirection_));
 
     const Color& base = sample.albedo;

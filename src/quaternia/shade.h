@@ -5,6 +5,8 @@
 // toDisplay() applies exposure and gamma.
 #pragma once
 
+#include <array>
+
 #include "fractal.h"
 #include "image.h"
 #include "march.h"
@@ -60,7 +62,7 @@ class Shader {
     const Vector3d& lightDirection() const { return lightDirection_; }
     // Shadow rays: at most kShadowSteps estimates, over-relaxed steps (shadow()).
     static constexpr int kShadowSteps = 256;
-    static constexpr double kShadowRelaxation = 1.6;
+    static constexpr double kShadowRelaxation = 1.8;
     // The visibility a shadow ray's march leaves (0 blocked; the running penumbra or 1) as light.
     double visibilityFromMarch(double marched) const;
     // Ambient occlusion: kOcclusionSamples estimates at occlusionHeight(1..n) along the normal.
@@ -84,6 +86,11 @@ class Shader {
     const Fractal& fractal_;
     Vector3d lightDirection_, fillDirection_;
     double occlusionStep_;
+    // occlusionFromEstimates' factors: 2 / height and the normalised weight of each sample.
+    std::array<double, kOcclusionSamples> occlusionScale_, occlusionWeight_;
+    // Below this cosine the highlight cos^shininess is under 1e-7, far below one step of a
+    // 16-bit channel: light() skips the power there.
+    double highlightCutoff_;
 };
 
 }  // namespace quaternia
