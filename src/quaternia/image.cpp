@@ -37,7 +37,7 @@ int64_t Mask::count() const {
 
 Mask maskFromAlpha(const Image& image, float threshold) {
     Mask mask = Mask::blank(image.width(), image.height());
-    const std::vector<Rgba>& pixels = image.pixels();
+    const Image::Pixels& pixels = image.pixels();
     for (size_t i = 0; i < pixels.size(); ++i)
         mask.inside[i] = pixels[i].a > threshold ? 1 : 0;
     return mask;
@@ -45,7 +45,7 @@ Mask maskFromAlpha(const Image& image, float threshold) {
 
 Mask maskFromImage(const Image& image) {
     Mask mask = Mask::blank(image.width(), image.height());
-    const std::vector<Rgba>& pixels = image.pixels();
+    const Image::Pixels& pixels = image.pixels();
     for (size_t i = 0; i < pixels.size(); ++i) {
         const Rgba& p = pixels[i];
         // Rec. 709 weights; on a gray image this is the gray value itself.
