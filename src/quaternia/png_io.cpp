@@ -51,9 +51,9 @@ void onPngWarning(png_structp, png_const_charp) {}  // library code never prints
 // float times 65535 keeps too few fractional bits to round reliably.
 template <uint32_t MaxValue>
 uint32_t quantise(float value) {
-    if (!(value > 0.0f)) return 0;
-    if (value >= 1.0f) return MaxValue;
-    return uint32_t(double(value) * double(MaxValue) + 0.5);
+    // Selects rather than branches, so that loops over pixels vectorise.
+    const float clamped = value > 0.0f ? (value < 1.0f ? value : 1.0f) : 0.0f;
+    return uint32_t(double(clamped) * double(MaxValue) + 0.5);
 }
 
 // Writes one quantised sample, big-endian as PNG stores it, and returns its end.
@@ -79,6 +79,23 @@ void putPixels(const Rgba* pixels, size_t count, uint8_t* out) {
         out = putSample<BitDepth>(out, p.b);
         if constexpr (WithAlpha) out = putSample<BitDepth>(out, p.a);
     }
+}
+
+// Whether every pixel's alpha quantises to MaxValue: checked a block at a time, each block
+// without branches (it vectorises), stopping at the first block with a lower one.
+template <uint32_t MaxValue>
+bool allAlphaQuantiseTo(const Image& image) {
+    const Rgba* pixels = image.pixels().data();
+    const size_t count = image.pixels().size();
+    constexpr size_t kBlock = 4096;
+    for (size_t begin = 0; begin < count; begin += kBlock) {
+        const size_t end = std::min(count, begin + kBlock);
+        uint32_t lowest = MaxValue;
+        for (size_t i = begin; i < end; ++i)
+            lowest = std::min(lowest, quantise<MaxValue>(pixels[i].a));
+        if (lowest != MaxValue) return false;
+    }
+    return true;
 }
 
 // Pixels per parallel item when quantising: small images stay on the calling thread.
@@ -206,9 +223,7 @@ std::vector<uint8_t> encodePng(const Image& image, int bitDepth) {
     // An alpha channel that is all maximum says nothing: RGB is a quarter less to compress and
     // decodes the same (opaque renders, plane images).
     const bool opaque =
-        std::all_of(image.pixels().begin(), image.pixels().end(), [bitDepth](const Rgba& p) {
-            return bitDepth == 8 ? quantise<255>(p.a) == 255 : quantise<65535>(p.a) == 65535;
-        });
+        bitDepth == 8 ? allAlphaQuantiseTo<255>(image) : allAlphaQuantiseTo<65535>(image);
     const PngFormat format{image.width(), image.height(), bitDepth,
                            opaque ? PngColorType::Rgb : PngColorType::Rgba};
     const size_t bytesPerPixel = size_t(pngChannels(format.colorType) * bitDepth / 8);
