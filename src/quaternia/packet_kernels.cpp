@@ -356,13 +356,15 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
     LaneScratch<T> finished;
     size_t next = 0;
     for (size_t lane = 0; lane < K * lanes; ++lane)
-        s.load(lane, rays, next, /*startAtZero=*/true, T(march.relaxation));
+        s.load(lane, rays, next, /*startAtZero=*/true);
 
     const V zero = hn::Zero(d), one = hn::Set(d, T(1));
     const V minimumStep = hn::Set(d, T(march.minimumStep));
     const V blockDistance = hn::Set(d, T(0.5 * march.minimumStep));
     const V softness = hn::Set(d, T(march.softness));
     const V maxSteps = hn::Set(d, T(march.maxSteps));
+    const V baseRelaxation = hn::Set(d, T(march.relaxation));
+    const V maxRelaxation = hn::Set(d, T(march.maxRelaxation));
     for (;;) {
         M live[K];
         V t[K];
@@ -373,9 +375,9 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
         for (size_t j = 0; j < K; ++j) {
             const size_t o = j * lanes;
             // Over-relaxation as Shader::shadow: where the balls of this point and the last do
-            // not overlap, go back to the plain step, then relax again.
+            // not overlap, go back to the plain step.
             const V radius = hn::Load(d, s.radius + o), lastStep = hn::Load(d, s.lastStep + o);
-            V relaxation = hn::Load(d, s.relaxation + o);
+            const V relaxation = hn::Load(d, s.relaxation + o);
             const auto gap =
                 hn::And(live[j], hn::And(relaxation > one, radius + e[j].distance < lastStep));
             const auto accepted = hn::AndNot(gap, live[j]);
@@ -387,12 +389,17 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
                                       hn::Min(open, softness * e[j].distance / t[j]), open);
             }
             const V newRadius = hn::Max(e[j].distance, minimumStep);
-            const V step = hn::IfThenElse(gap, radius, relaxation * newRadius);
+            // Shader::shadowRelaxation in lanes.
+            const V slope = hn::Max(hn::Set(d, T(-0.8)), (radius - newRadius) / lastStep);
+            const V factor =
+                hn::IfThenElse(lastStep > zero,
+                               hn::Min(maxRelaxation, hn::Max(one, baseRelaxation / (one + slope))),
+                               baseRelaxation);
+            const V step = hn::IfThenElse(gap, radius, factor * newRadius);
             const V tNext = hn::IfThenElse(gap, t[j] + radius - lastStep, t[j] + step);
             hn::Store(hn::IfThenElse(gap, radius, newRadius), d, s.radius + o);
             hn::Store(step, d, s.lastStep + o);
-            hn::Store(hn::IfThenElse(gap, one, hn::Set(d, T(march.relaxation))), d,
-                      s.relaxation + o);
+            hn::Store(hn::IfThenElse(gap, one, factor), d, s.relaxation + o);
             const V steps = hn::Load(d, s.steps + o) + one;
             auto cleared = hn::AndNot(
                 blocked,
@@ -409,7 +416,7 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
         for (size_t lane = 0; lane < K * lanes; ++lane) {
             if (finished.kind[lane] == T(0)) continue;
             visibility[size_t(s.ray[lane])] = finished.a[lane];
-            s.load(lane, rays, next, /*startAtZero=*/true, T(march.relaxation));
+            s.load(lane, rays, next, /*startAtZero=*/true);
         }
     }
 }

@@ -100,7 +100,8 @@ struct ShadowMarch {
     double softness = 12;
     bool soft = true;
     int maxSteps = 256;
-    double relaxation = 1;  // over-relaxation factor of the steps (Shader::shadow)
+    double relaxation = 1;     // over-relaxation factor of the steps (Shader::shadow)
+    double maxRelaxation = 1;  // and its cap (Shader::shadowRelaxation)
 };
 void traceShadowRays(const LaneFractal& fractal, const ShadowMarch& march, const RayBatch& rays,
                      std::vector<double>& visibility, LaneCounters& counters);

@@ -156,6 +156,7 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
     shadowMarch.soft = shader_.shadows() == Shadows::Soft;
     shadowMarch.maxSteps = Shader::kShadowSteps;
     shadowMarch.relaxation = Shader::kShadowRelaxation;
+    shadowMarch.maxRelaxation = Shader::kShadowMaxRelaxation;
     traceShadowRays(lanes_, shadowMarch, shadowRays_, shadowVisibility_, stats.shading);
 
     if (shader_.occlusionEnabled()) {

@@ -55,10 +55,10 @@ double Shader::shadow(const Point3d& p, ShadingStats& stats) const {
     const bool soft = settings_.shadows == Shadows::Soft;
     double visibility = 1;
     double t = 0;
-    // Over-relaxed sphere tracing (Keinert et al. 2014): steps of kShadowRelaxation times the
+    // Over-relaxed sphere tracing (Keinert et al. 2014): steps of shadowRelaxation() times the
     // estimate while the balls of consecutive points overlap; where they do not, the step may
-    // have jumped over the set, so go back to the plain step, then relax again.
-    double relaxation = kShadowRelaxation, radius = 0, step = 0;
+    // have jumped over the set, so go back to the plain step.
+    double relaxation = 1, radius = 0, step = 0;
     for (int steps = 0; steps < kShadowSteps && t < interval->tFar; ++steps) {
         DistanceEstimate e = fractal_.estimate(ray.at(t));
         ++stats.estimates;
@@ -73,9 +73,10 @@ double Shader::shadow(const Point3d& p, ShadingStats& stats) const {
         // The penumbra: how nearly the shadow ray grazed the set relative to how far it went.
         if (soft && t > 0)
             visibility = std::min(visibility, settings_.shadowSoftness * e.distance / t);
-        radius = std::max(e.distance, minimumStep);
+        const double newRadius = std::max(e.distance, minimumStep);
+        relaxation = shadowRelaxation(radius, newRadius, step);
+        radius = newRadius;
         step = relaxation * radius;
-        relaxation = kShadowRelaxation;
         t += step;
     }
     return visibilityFromMarch(soft ? visibility : 1);

@@ -5,6 +5,7 @@
 // toDisplay() applies exposure and gamma.
 #pragma once
 
+#include <algorithm>
 #include <array>
 
 #include "fractal.h"
@@ -62,7 +63,18 @@ class Shader {
     const Vector3d& lightDirection() const { return lightDirection_; }
     // Shadow rays: at most kShadowSteps estimates, over-relaxed steps (shadow()).
     static constexpr int kShadowSteps = 256;
-    static constexpr double kShadowRelaxation = 1.8;
+    static constexpr double kShadowRelaxation = 1.6;
+    static constexpr double kShadowMaxRelaxation = 4;
+    // The factor of the next shadow step, from the last step and the radii (estimates, at least
+    // the minimum step) at both its ends. As sphereTrace's (march.h), kShadowRelaxation / (1 +
+    // slope), but the slope may be negative: a shadow ray leaves the surface, its estimate grows
+    // with t, and consecutive balls still touch after steps of many estimates (up to 2 / (1 -
+    // growth)); capped at kShadowMaxRelaxation.
+    static double shadowRelaxation(double radius, double newRadius, double step) {
+        if (!(step > 0)) return kShadowRelaxation;
+        const double slope = std::max(-0.8, (radius - newRadius) / step);
+        return std::clamp(kShadowRelaxation / (1 + slope), 1.0, kShadowMaxRelaxation);
+    }
     // The visibility a shadow ray's march leaves (0 blocked; the running penumbra or 1) as light.
     double visibilityFromMarch(double marched) const;
     // Ambient occlusion: kOcclusionSamples estimates at occlusionHeight(1..n) along the normal.
