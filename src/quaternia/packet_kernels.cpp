@@ -591,9 +591,7 @@ void PotentialNormals(const LaneFractal& fractal, const PointBatch& points,
 }
 void EncodeDisplay(float* values, size_t pixels, float exposure, float inverseGamma) {
     const hn::ScalableTag<float> d;
-    const hn::RebindToSigned<decltype(d)> di;
     const size_t lanes = hn::Lanes(d);
-    const size_t count = 4 * pixels;
     const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f), scale = hn::Set(d, exposure),
                power = hn::Set(d, inverseGamma), tiny = hn::Set(d, 1e-30f);
     auto encode = [&](hn::Vec<decltype(d)> v) {
@@ -601,20 +599,21 @@ void EncodeDisplay(float* values, size_t pixels, float exposure, float inverseGa
         // v^g = exp(g ln v); v = 0 gives 0.
         return hn::IfThenZeroElse(v <= zero, hn::Exp(d, power * hn::Log(d, hn::Max(v, tiny))));
     };
-    // Value i is channel i mod 4 of its pixel; channel 3, alpha, passes unchanged.
-    const auto three = hn::Set(di, 3);
-    auto encodeColours = [&](size_t i, hn::Vec<decltype(d)> v) {
-        const auto alpha = hn::RebindMask(d, hn::And(hn::Iota(di, int32_t(i)), three) == three);
-        return hn::IfThenElse(alpha, v, encode(v));
+    // A vector of pixels at a time, split into its channels: the colours are encoded, alpha
+    // passes unchanged (and costs nothing).
+    auto encodePixels = [&](float* p) {
+        hn::Vec<decltype(d)> r, g, b, a;
+        hn::LoadInterleaved4(d, p, r, g, b, a);
+        hn::StoreInterleaved4(encode(r), encode(g), encode(b), a, d, p);
     };
     size_t i = 0;
-    for (; i + lanes <= count; i += lanes)
-        hn::StoreU(encodeColours(i, hn::LoadU(d, values + i)), d, values + i);
-    if (i < count) {
-        alignas(kMaxLaneBytes) float tail[kMaxLaneBytes / sizeof(float)] = {};
-        std::copy(values + i, values + count, tail);
-        hn::Store(encodeColours(i, hn::Load(d, tail)), d, tail);
-        std::copy(tail, tail + (count - i), values + i);
+    for (; i + lanes <= pixels; i += lanes)
+        encodePixels(values + 4 * i);
+    if (i < pixels) {
+        alignas(kMaxLaneBytes) float tail[4 * kMaxLaneBytes / sizeof(float)] = {};
+        std::copy(values + 4 * i, values + 4 * pixels, tail);
+        encodePixels(tail);
+        std::copy(tail, tail + 4 * (pixels - i), values + 4 * i);
     }
 }
 const char* TargetName() {
