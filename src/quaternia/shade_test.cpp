@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
+#include "camera.h"
 #include "parameters.h"
 #include "test_scenes.h"
 
@@ -21,6 +25,33 @@ TEST(Shader, BackgroundIsVerticalGradient) {
     EXPECT_EQ(shader.background(Ray{{}, {0, 1, 0}}), Color(0, 0, 1));
     EXPECT_EQ(shader.background(Ray{{}, {0, -1, 0}}), Color(1, 0, 0));
     EXPECT_EQ(shader.background(Ray{{}, {1, 0, 0}}), Color(0.5, 0, 0.5));
+}
+
+// The row form (SIMD, float) gives every pixel centre's background() of the camera's ray, for
+// rows and spans that are not multiples of the vector length, with the alpha asked for.
+TEST(Shader, BackgroundRowMatchesThePixelsRays) {
+    UnitBall ball;
+    ball.scene.shading.backgroundTop = {0.2, 0.5, 1};
+    ball.scene.shading.backgroundBottom = {1, 0.1, 0};
+    Shader shader(ball.scene.shading, ball.fractal);
+    CameraSettings settings = ball.scene.camera;
+    settings.position = {0.7, 1.9, -4};
+    const Camera camera(settings, 101, 37);
+    std::vector<Rgba> row(101);
+    for (int py : {0, 18, 36}) {
+        for (auto [x0, count] : {std::pair{0, 101}, std::pair{3, 23}, std::pair{97, 4}}) {
+            const Camera::RowDirections directions = camera.rowDirections(py);
+            shader.backgroundRow(directions.first, directions.step, x0, count, 0.25f, row.data());
+            for (int i = 0; i < count; ++i) {
+                const Color expected =
+                    shader.background(camera.generateRay(x0 + i + 0.5, py + 0.5));
+                EXPECT_NEAR(row[i].r, expected.x, 1e-5) << py << " " << x0 + i;
+                EXPECT_NEAR(row[i].g, expected.y, 1e-5) << py << " " << x0 + i;
+                EXPECT_NEAR(row[i].b, expected.z, 1e-5) << py << " " << x0 + i;
+                EXPECT_EQ(row[i].a, 0.25f);
+            }
+        }
+    }
 }
 
 TEST(Shader, DisplayAppliesExposureClampAndGamma) {
