@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <type_traits>
 
 #include "quaternia/lane_state.h"
@@ -227,6 +228,17 @@ HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes
     return true;
 }
 
+// The mask as bits, lane i at bit i (at most 64 lanes: kLaneGroups vectors of 16 floats).
+template <class D>
+HWY_INLINE uint64_t laneBits(D d, hn::Mask<D> mask) {
+    static_assert(kLaneCapacity<float> <= 64);
+    uint8_t bytes[8] = {};
+    hn::StoreMaskBits(d, mask, bytes);
+    uint64_t bits = 0;
+    std::memcpy(&bits, bytes, sizeof bits);
+    return bits;
+}
+
 // relaxedMarchStep (march.h) in lanes, written the same way so that double lanes round alike.
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V relaxedLength(D d, V relaxation, V t, V tPrevious, V radius, V distance) {
@@ -270,7 +282,7 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
         LaneEstimate<D> e[K];
         if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) break;
 
-        bool anyDone = false;
+        uint64_t doneLanes = 0;  // bit per lane of the rays that ended this step
         for (size_t j = 0; j < K; ++j) {
             const size_t o = j * lanes;
             const V footprint = pixelAngle * t[j];
@@ -311,7 +323,7 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
                           hn::IfThenElseZero(grazing, hn::Set(d, T(2))) +
                           hn::IfThenElseZero(missed, hn::Set(d, T(3))),
                       d, finished.kind + o);
-            anyDone = anyDone || !hn::AllFalse(d, hn::Or(ended, missed));
+            doneLanes |= laneBits(d, hn::Or(ended, missed)) << o;
             hn::Store(tNext, d, s.t + o);
             hn::Store(hn::IfThenElse(gap, tPrevious, t[j]), d, s.tOutside + o);
             hn::Store(hn::IfThenElse(gap, radius, distance), d, s.radius + o);
@@ -320,9 +332,8 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
             hn::Store(confirming, d, s.confirming + o);
             hn::Store(steps, d, s.steps + o);
         }
-        if (!anyDone) continue;
-        for (size_t lane = 0; lane < K * lanes; ++lane) {
-            if (finished.kind[lane] == T(0)) continue;
+        for (; doneLanes != 0; doneLanes &= doneLanes - 1) {
+            const size_t lane = size_t(__builtin_ctzll(doneLanes));
             TraceResult& r = results[size_t(s.ray[lane])];
             r.steps = int(finished.c[lane]);
             r.t = finished.a[lane];
@@ -371,7 +382,7 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
         LaneEstimate<D> e[K];
         if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) break;
 
-        bool anyDone = false;
+        uint64_t doneLanes = 0;
         for (size_t j = 0; j < K; ++j) {
             const size_t o = j * lanes;
             // Over-relaxation as Shader::shadow: where the balls of this point and the last do
@@ -408,13 +419,11 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
             hn::Store(tNext, d, s.t + o);
             hn::Store(open, d, s.confirming + o);
             hn::Store(steps, d, s.steps + o);
-            hn::Store(hn::IfThenElseZero(done, one), d, finished.kind + o);
             hn::Store(hn::IfThenZeroElse(blocked, march.soft ? open : one), d, finished.a + o);
-            anyDone = anyDone || !hn::AllFalse(d, done);
+            doneLanes |= laneBits(d, done) << o;
         }
-        if (!anyDone) continue;
-        for (size_t lane = 0; lane < K * lanes; ++lane) {
-            if (finished.kind[lane] == T(0)) continue;
+        for (; doneLanes != 0; doneLanes &= doneLanes - 1) {
+            const size_t lane = size_t(__builtin_ctzll(doneLanes));
             visibility[size_t(s.ray[lane])] = finished.a[lane];
             s.load(lane, rays, next, /*startAtZero=*/true);
         }
