@@ -15,7 +15,8 @@ PacketTileRenderer::PacketTileRenderer(const LaneFractal& lanes, const Camera& c
       shader_(shader),
       march_{march.epsilon, march.pixelAngle, march.maxSteps, march.relaxation},
       samples_(samples),
-      boundingRadius_(std::sqrt(lanes.bailoutSquared)) {}
+      boundingRadius_(std::sqrt(lanes.bailoutSquared)),
+      lightConstants_(shader.lightConstants()) {}
 
 void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixels,
                                 PacketTileStats& stats) {
@@ -168,11 +169,12 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
         estimateDistances(lanes_, occlusionPoints_, occlusionDistances_, stats.shading);
     }
 
-    colors_.resize(count);
+    // Each hit's surface sample, then their lighting in lanes.
+    surfaces_.resize(count);
     size_t nextShadow = 0;
     for (size_t h = 0; h < count; ++h) {
-        SurfaceSample sample;
-        sample.normal = normals_[h];
+        const Vector3d& n = normals_[h];
+        const Vector3d& direction = hits_[h].direction;
         const PointEstimate& e = hitEstimates_[h];
         DistanceEstimate orbit;
         orbit.trap = e.trap;
@@ -181,20 +183,30 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
                 e.inside ? lanes_.maxIterations
                          : smoothEscapeCount(e.iterations, e.radiusSquared, lanes_.degree);
         }
-        sample.albedo = shader_.albedo(orbit);
-        if (!(shader_.keyDiffuse(sample.normal) > 0)) {
-            sample.visibility = 0;
+        const Color albedo = shader_.albedo(orbit);
+        double visibility = 1;  // no shadows, or the shadow ray leaves the bounding sphere
+        if (!(shader_.keyDiffuse(n) > 0)) {
+            visibility = 0;
         } else if (nextShadow < shadowHit_.size() && shadowHit_[nextShadow] == int(h)) {
-            sample.visibility = shader_.visibilityFromMarch(shadowVisibility_[nextShadow++]);
-        } else {
-            sample.visibility = 1;  // no shadows, or the shadow ray leaves the bounding sphere
+            visibility = shader_.visibilityFromMarch(shadowVisibility_[nextShadow++]);
         }
+        double occlusion = 1;
         if (shader_.occlusionEnabled()) {
-            sample.occlusion = shader_.ambientFromOpenness(shader_.occlusionFromEstimates(
+            occlusion = shader_.ambientFromOpenness(shader_.occlusionFromEstimates(
                 occlusionDistances_.data() + h * Shader::kOcclusionSamples));
         }
-        colors_[h] = shader_.light(sample, Ray{hits_[h].outside, hits_[h].direction});
+        SurfaceBatch& s = surfaces_;
+        s.nx[h] = float(n.x), s.ny[h] = float(n.y), s.nz[h] = float(n.z);
+        s.dx[h] = float(direction.x), s.dy[h] = float(direction.y), s.dz[h] = float(direction.z);
+        s.albedoR[h] = float(albedo.x), s.albedoG[h] = float(albedo.y),
+        s.albedoB[h] = float(albedo.z);
+        s.visibility[h] = float(visibility);
+        s.occlusion[h] = float(occlusion);
     }
+    lightSurfaces(lightConstants_, surfaces_);
+    colors_.resize(count);
+    for (size_t h = 0; h < count; ++h)
+        colors_[h] = Color(surfaces_.red[h], surfaces_.green[h], surfaces_.blue[h]);
 }
 
 }  // namespace quaternia

@@ -51,6 +51,7 @@ class PacketTileRenderer {
     CameraMarch march_;
     int samples_;
     double boundingRadius_;
+    LightConstants lightConstants_;
 
     RayBatch cones_;
     std::vector<TraceResult> coneResults_;
@@ -78,6 +79,7 @@ class PacketTileRenderer {
     std::vector<double> shadowVisibility_;
     PointBatch occlusionPoints_;
     std::vector<double> occlusionDistances_;
+    SurfaceBatch surfaces_;
     std::vector<Color> colors_;
 };
 

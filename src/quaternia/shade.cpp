@@ -167,6 +167,22 @@ Color Shader::light(const SurfaceSample& sample, const Ray& ray) const {
     return color;
 }
 
+LightConstants Shader::lightConstants() const {
+    auto put = [](float* out, const Vector3d& v) {
+        out[0] = float(v.x), out[1] = float(v.y), out[2] = float(v.z);
+    };
+    LightConstants k;
+    put(k.light, lightDirection_);
+    put(k.fill, fillDirection_);
+    put(k.lightColor, settings_.lightColor);
+    put(k.fillColor, settings_.fillColor);
+    k.specular = float(settings_.specular);
+    k.shininess = float(settings_.shininess);
+    k.ambient = float(settings_.ambient);
+    k.highlightCutoff = float(highlightCutoff_);
+    return k;
+}
+
 Color Shader::background(const Ray& ray) const {
     double v = 0.5 + 0.5 * ray.direction.y;
     return lerp(settings_.backgroundBottom, settings_.backgroundTop, v);

@@ -11,6 +11,7 @@
 #include "fractal.h"
 #include "image.h"
 #include "march.h"
+#include "packet_kernels.h"
 #include "scene.h"
 
 namespace quaternia {
@@ -87,6 +88,8 @@ class Shader {
     double ambientFromOpenness(double open) const;
     // The lit colour of a surface sample seen along `ray`.
     Color light(const SurfaceSample& sample, const Ray& ray) const;
+    // light()'s constants for its SIMD form (packet_kernels.h, lightSurfaces).
+    LightConstants lightConstants() const;
     // Exposure, clamp to [0, 1] and gamma: the values written to an 8- or 16-bit image.
     Color toDisplay(const Color& linear) const;
     // The same for the colours of many pixels in place, alpha kept (SIMD, packet_kernels.h;
