@@ -42,6 +42,8 @@ class Camera {
     // Width of one pixel at distance t along a ray near the image centre: t * 2 tan(fov/2) / W.
     // Marching epsilons are fractions of it, so precision follows the image resolution.
     double pixelFootprint(double t) const { return t * pixelAngle_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
     const Point3d& position() const { return position_; }
 
   private:

@@ -16,7 +16,31 @@ PacketTileRenderer::PacketTileRenderer(const LaneFractal& lanes, const Camera& c
       march_{march.epsilon, march.pixelAngle, march.maxSteps, march.relaxation},
       samples_(samples),
       boundingRadius_(std::sqrt(lanes.bailoutSquared)),
-      lightConstants_(shader.lightConstants()) {}
+      lightConstants_(shader.lightConstants()),
+      coneRatio_(coneRatio(camera)) {}
+
+double PacketTileRenderer::coneRatio(const Camera& camera) {
+    // The cone about a block's central ray holds every ray through the block: points at the same
+    // t lie within t |d - d_centre| of each other, largest at the block's corners. Through a
+    // pinhole, a block subtends the widest angle at the image centre (its angular size falls as
+    // cos^2 of the angle off the axis radially, as cos tangentially); the blocks at the centre
+    // and the four image corners are measured, and the widest, with a margin, serves all.
+    const double width = camera.width(), height = camera.height();
+    const double block = kConeBlock;
+    double ratio = 0;
+    for (auto [cx, cy] :
+         {std::pair{0.5 * width, 0.5 * height}, std::pair{0.5 * block, 0.5 * block},
+          std::pair{width - 0.5 * block, 0.5 * block}, std::pair{0.5 * block, height - 0.5 * block},
+          std::pair{width - 0.5 * block, height - 0.5 * block}}) {
+        const Vector3d centre = camera.generateRay(cx, cy).direction;
+        for (double dx : {-0.5 * block, 0.5 * block}) {
+            for (double dy : {-0.5 * block, 0.5 * block})
+                ratio = std::max(ratio,
+                                 length(camera.generateRay(cx + dx, cy + dy).direction - centre));
+        }
+    }
+    return ratio * 1.01 + 1e-12;
+}
 
 void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixels,
                                 PacketTileStats& stats) {
@@ -74,9 +98,6 @@ void PacketTileRenderer::marchCones(const Tile& tile, PacketTileStats& stats) {
     blockStart_.assign(size_t(across * down), 0.0);
     cones_.clear();
     coneBlock_.clear();
-    // The cone about a block's central ray holds every ray through the block: points at the same
-    // t lie within t |d - d_centre| of each other, largest at the block's corners.
-    double ratio = 0;
     std::vector<Ray>& centres = coneCentres_;
     centres.clear();
     for (int by = 0; by < down; ++by) {
@@ -84,16 +105,10 @@ void PacketTileRenderer::marchCones(const Tile& tile, PacketTileStats& stats) {
             const double x0 = tile.x0 + bx * kConeBlock, y0 = tile.y0 + by * kConeBlock;
             const double x1 = std::min<double>(x0 + kConeBlock, tile.x1);
             const double y1 = std::min<double>(y0 + kConeBlock, tile.y1);
-            Ray centre = camera_.generateRay(0.5 * (x0 + x1), 0.5 * (y0 + y1));
-            for (double cx : {x0, x1}) {
-                for (double cy : {y0, y1})
-                    ratio = std::max(
-                        ratio, length(camera_.generateRay(cx, cy).direction - centre.direction));
-            }
-            centres.push_back(centre);
+            centres.push_back(camera_.generateRay(0.5 * (x0 + x1), 0.5 * (y0 + y1)));
         }
     }
-    ratio = ratio * 1.01 + 1e-12;
+    const double ratio = coneRatio_;
     // Every ray of the block is inside the bounding sphere only where the central ray is inside
     // the sphere grown by the cone's widest radius there.
     const double farthest = length(centres.front().origin) + boundingRadius_;

@@ -52,6 +52,9 @@ class PacketTileRenderer {
     int samples_;
     double boundingRadius_;
     LightConstants lightConstants_;
+    // The cones' radius per unit of t, for every block of the image (coneRatio()).
+    static double coneRatio(const Camera& camera);
+    double coneRatio_;
 
     RayBatch cones_;
     std::vector<TraceResult> coneResults_;
