@@ -1,7 +1,7 @@
 // The SIMD path of render(): a tile's camera rays marched together in lanes, then its hits
 // shaded in batches (normals, shadow rays, ambient occlusion), each batch one call of the packet
-// kernels (packet_kernels.h). The lighting itself is the scalar path's (Shader::light), so both
-// paths make the same picture up to the precision of the lanes.
+// kernels (packet_kernels.h), and lit together (shading_kernels.h, Shader::light's formula), so
+// both paths make the same picture up to the precision of the lanes.
 #pragma once
 
 #include <vector>

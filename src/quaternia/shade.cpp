@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "packet_kernels.h"
+#include "shading_kernels.h"
 
 namespace quaternia {
 namespace {

@@ -11,8 +11,8 @@
 #include "fractal.h"
 #include "image.h"
 #include "march.h"
-#include "packet_kernels.h"
 #include "scene.h"
+#include "shading_kernels.h"
 
 namespace quaternia {
 
@@ -88,11 +88,11 @@ class Shader {
     double ambientFromOpenness(double open) const;
     // The lit colour of a surface sample seen along `ray`.
     Color light(const SurfaceSample& sample, const Ray& ray) const;
-    // light()'s constants for its SIMD form (packet_kernels.h, lightSurfaces).
+    // light()'s constants for its SIMD form (shading_kernels.h, lightSurfaces).
     LightConstants lightConstants() const;
     // Exposure, clamp to [0, 1] and gamma: the values written to an 8- or 16-bit image.
     Color toDisplay(const Color& linear) const;
-    // The same for the colours of many pixels in place, alpha kept (SIMD, packet_kernels.h;
+    // The same for the colours of many pixels in place, alpha kept (SIMD, shading_kernels.h;
     // equal to float rounding).
     void toDisplay(Rgba* pixels, size_t count) const;
 
