@@ -37,7 +37,8 @@ struct RayLanes {
     QUATERNIA_LANE_ARRAY(T, steps);
     QUATERNIA_LANE_ARRAY(T, live);
     // Over-relaxed marching: the last ball's radius and the last step (camera rays: the relaxed
-    // step, 0 where it was plain), the factor (shadow rays), the plain step (camera rays).
+    // step, 0 where it was plain), the factor of the last step (shadow rays), the plain step
+    // (camera rays).
     QUATERNIA_LANE_ARRAY(T, radius);
     QUATERNIA_LANE_ARRAY(T, lastStep);
     QUATERNIA_LANE_ARRAY(T, relaxation);
@@ -47,8 +48,7 @@ struct RayLanes {
     // Puts ray `next` of the batch into `lane` (and advances next), or empties the lane when the
     // batch is exhausted. Camera rays start at tNear; shadow rays at 0 with confirming = 1, the
     // running visibility.
-    void load(size_t lane, const RayBatch& rays, size_t& next, bool startAtZero = false,
-              T relax = T(1)) {
+    void load(size_t lane, const RayBatch& rays, size_t& next, bool startAtZero = false) {
         if (next >= rays.size()) {
             ray[lane] = -1;
             live[lane] = T(0);
@@ -65,7 +65,7 @@ struct RayLanes {
         confirming[lane] = startAtZero ? T(1) : T(0);
         steps[lane] = T(0);
         radius[lane] = lastStep[lane] = plainStep[lane] = T(0);
-        relaxation[lane] = relax;
+        relaxation[lane] = T(1);  // a shadow ray's first step: no step behind it to check
     }
 };
 

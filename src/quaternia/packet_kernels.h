@@ -100,8 +100,10 @@ struct ShadowMarch {
     double softness = 12;
     bool soft = true;
     int maxSteps = 256;
-    double relaxation = 1;     // over-relaxation factor of the steps (Shader::shadow)
-    double maxRelaxation = 1;  // and its cap (Shader::shadowRelaxation)
+    // Over-relaxation (Shader::shadowRelaxation): the factor where the estimate neither grows
+    // nor falls, and its cap.
+    double relaxation = 1;
+    double maxRelaxation = 1;
 };
 void traceShadowRays(const LaneFractal& fractal, const ShadowMarch& march, const RayBatch& rays,
                      std::vector<double>& visibility, LaneCounters& counters);
