@@ -6,7 +6,8 @@
 namespace quaternia {
 
 MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
-    // Steps are over-relaxed (kMarchRelaxation, march.h) and checked against the plain step.
+    // Steps are over-relaxed (settings.relaxation, relaxedMarchStep in march.h) and checked
+    // against the plain step.
     // Once the estimate is below epsilon the ray is within about two epsilons of K_N (the
     // estimate is at least half the true distance near the set). Rather than stop on that offset
     // surface, which fattens dust and thin filaments, confirm: keep stepping by the estimate but

@@ -84,7 +84,7 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
         shadeHits(stats);
         for (size_t h = 0; h < hits_.size(); ++h) {
             PixelSamples& pixel = pixels[size_t(hits_[h].pixel)];
-            pixel.sum += colors_[h];
+            pixel.sum += Color(surfaces_.red[h], surfaces_.green[h], surfaces_.blue[h]);
             pixel.depthSum += hits_[h].t;
             ++pixel.hits;
         }
@@ -218,10 +218,7 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
         s.visibility[h] = float(visibility);
         s.occlusion[h] = float(occlusion);
     }
-    lightSurfaces(lightConstants_, surfaces_);
-    colors_.resize(count);
-    for (size_t h = 0; h < count; ++h)
-        colors_[h] = Color(surfaces_.red[h], surfaces_.green[h], surfaces_.blue[h]);
+    lightSurfaces(lightConstants_, surfaces_);  // the colours: surfaces_.red, green, blue
 }
 
 }  // namespace quaternia

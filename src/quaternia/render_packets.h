@@ -82,8 +82,7 @@ class PacketTileRenderer {
     std::vector<double> shadowVisibility_;
     PointBatch occlusionPoints_;
     std::vector<double> occlusionDistances_;
-    SurfaceBatch surfaces_;
-    std::vector<Color> colors_;
+    SurfaceBatch surfaces_;  // each hit's surface sample and, once lit, its colour
 };
 
 }  // namespace quaternia
