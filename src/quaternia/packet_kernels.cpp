@@ -33,6 +33,10 @@ struct LaneConstants {
     QuaternionLanes<V> origin, axis0, axis1, axis2, c;
     V scale, bailoutSquared, escapeRadiusSquared, estimateRadiusSquared, stepScale, maxIterations;
     V gainFactor;  // 4 s^2 for d = 2, s^2 d^2 otherwise
+    // The float loop of s z^2 + c in u = 2 s z (estimateLanes): 2 s, 2 s c, the bailout and
+    // estimate radii squared times 4 s^2, and 1 / (4 s^2).
+    V twoScale, scaledBailoutSquared, scaledEstimateRadiusSquared, inverseFourScaleSquared;
+    QuaternionLanes<V> scaledC;
     int degree, maxIterationCount;
     bool certified;  // bailout >= the certified escape radius: every escape is final
 
@@ -57,6 +61,14 @@ struct LaneConstants {
         stepScale = hn::Set(d, T(f.stepScale));
         maxIterations = hn::Set(d, T(f.maxIterations));
         gainFactor = hn::Set(d, T(f.scale * f.scale * f.degree * f.degree));
+        const double fourScaleSquared = 4 * f.scale * f.scale;
+        twoScale = hn::Set(d, T(2 * f.scale));
+        scaledC = lanes({2 * f.scale * f.c[0], 2 * f.scale * f.c[1], 2 * f.scale * f.c[2],
+                         2 * f.scale * f.c[3]});
+        scaledBailoutSquared = hn::Set(d, T(fourScaleSquared * f.bailoutSquared));
+        scaledEstimateRadiusSquared =
+            hn::Set(d, T(fourScaleSquared * continuationRadiusSquared<T>(f.degree)));
+        inverseFourScaleSquared = hn::Set(d, T(1 / fourScaleSquared));
     }
 
     // The slice: a 3D point to its quaternion.
@@ -70,7 +82,8 @@ struct LaneConstants {
 
 template <class D>
 struct LaneEstimate {
-    hn::Vec<D> distance, trapSquared, iterations, radiusSquared;
+    hn::Vec<D> distance, trapSquared, radiusSquared;
+    hn::Vec<D> iterations;  // with kOrbit only (estimateLanes)
     hn::Mask<D> inside;
 };
 
@@ -81,12 +94,65 @@ HWY_INLINE QuaternionLanes<V> select(M mask, const QuaternionLanes<V>& yes,
             hn::IfThenElse(mask, yes.y, no.y), hn::IfThenElse(mask, yes.z, no.z)};
 }
 
+// ln x for float lanes of positive, finite x, from x = m 2^e (m in [1, 2)): ln x = (e + log2 m)
+// ln 2, log2 m by a degree-6 polynomial in m - 1 that interpolates it at the Chebyshev nodes of
+// [1, 2] (error below 2.5e-6), lowered by that bound so that it never exceeds log2 m.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V fastLogLanes(D d, V x) {
+    using T = hn::TFromD<D>;
+    static_assert(sizeof(T) == 4, "float lanes only");
+    const hn::RebindToSigned<D> di;
+    const auto bits = hn::BitCast(di, x);
+    const V exponent = hn::ConvertTo(d, hn::ShiftRight<23>(bits) - hn::Set(di, 127));
+    const V t =
+        hn::BitCast(d, hn::Or(hn::And(bits, hn::Set(di, 0x007fffff)), hn::Set(di, 0x3f800000))) -
+        hn::Set(d, T(1));
+    V p = hn::Set(d, T(-0.0245685347));
+    p = hn::MulAdd(p, t, hn::Set(d, T(0.117613084)));
+    p = hn::MulAdd(p, t, hn::Set(d, T(-0.272697565)));
+    p = hn::MulAdd(p, t, hn::Set(d, T(0.454508492)));
+    p = hn::MulAdd(p, t, hn::Set(d, T(-0.71731278)));
+    p = hn::MulAdd(p, t, hn::Set(d, T(1.44245353)));
+    p = hn::MulAdd(p, t, hn::Set(d, T(2.44343872e-6 - 2.45e-6)));
+    return (exponent + p) * hn::Set(d, T(0.693147180559945));
+}
+
+// The closing formula of the estimate, d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2)
+// ln |z|^2, with its step scale; an overflowed |z'|^2 gives 0, which is right: the distance is
+// then far below any step. Double lanes compute it as JuliaSet::estimate does. Float lanes, whose
+// estimate is only good to a few percent anyway (the continuation stops at |z| = 100), take
+// sqrt(a / b) = a / sqrt(a b) from the reciprocal square root estimate (relative error below
+// 4e-4 on every target) and the logarithm from fastLogLanes: a division, a square root and a
+// longer logarithm less per estimate. (A margin of 1/512 below the exact value, tried to keep
+// the rounding one-sided, moved the lanes' ambient occlusion and soft shadows visibly away from
+// the scalar path's: PacketRender.ShadedImageMatchesTheScalarPath.)
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V closingDistance(D d, V radiusSquared, V derivativeSquared, V stepScale) {
+    using T = hn::TFromD<D>;
+    V distance;
+    if constexpr (sizeof(T) == 4) {
+        const V root = hn::ApproximateReciprocalSqrt(radiusSquared * derivativeSquared);
+        distance = hn::Set(d, T(0.25)) * radiusSquared * root * fastLogLanes(d, radiusSquared);
+    } else {
+        distance = hn::Set(d, T(0.25)) * hn::Sqrt(radiusSquared / derivativeSquared) *
+                   hn::Log(d, radiusSquared);
+    }
+    return hn::Max(hn::Zero(d), distance) * stepScale;
+}
+
 // JuliaSet::estimate (distance.cpp) in lanes: iterate while |z| <= bailout and fewer than N
 // iterates were tested, then, where escape is certain, continue to the estimate radius. Every
 // lane runs the same iterations (no per-lane selects on z, which would lengthen the dependency
 // chain); a lane whose estimate is final is marked done and its |z|^2 and |z'|^2 are kept at
 // that iteration, while its z runs on unused (it may overflow; nothing reads it). The loop ends
 // when every lane is done. kOrbit also keeps the orbit trap and the iteration count.
+//
+// The marching kernels' case, a certified bailout without the orbit, is the hot loop of the
+// renderer. There, float lanes of s z^2 + c iterate u = 2 s z instead of z: u <- u^2 / 2 + 2 s c
+// and |u'|^2 <- |u|^2 |u'|^2 are the same map and the same running derivative (|z'_{n+1}|^2 =
+// 4 s^2 |z_n|^2 |z'_n|^2 = |u_n|^2 |z'_n|^2) without the two multiplications by 2 s, and the
+// radii compare against thresholds scaled by 4 s^2. Only the counters want the iteration count
+// there; they count the running lanes instead of keeping each lane's count.
 template <bool kQuadratic, bool kOrbit, size_t K, class D>
 HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn::Vec<D>> (&z)[K],
                               const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
@@ -94,7 +160,12 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
     using V = hn::Vec<D>;
     using M = hn::Mask<D>;
     using T = hn::TFromD<D>;
-    const V one = hn::Set(d, T(1));
+    const V one = hn::Set(d, T(1)), half = hn::Set(d, T(0.5));
+    // Where the bailout is at least the certified escape radius (the default), every escape is
+    // final and |z| grows from then on: a lane stops at the estimate radius, and the lanes not
+    // escaped after N iterates are inside; the escaped mask is then needed only for the trap.
+    const bool certified = !kOrbit && k.certified;
+    const bool scaled = certified && kQuadratic && sizeof(T) == 4;  // iterate u = 2 s z
     // K independent groups of lanes, iterated side by side so that their dependency chains
     // overlap in the pipeline.
     V r2[K], derivativeSquared[K], stopRadiusSquared[K], stopDerivativeSquared[K], trap[K],
@@ -113,23 +184,49 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
             inside[j] = hn::AndNot(escaped[j], live[j]);
             done[j] = hn::Or(done[j], inside[j]);
         }
-        stopRadiusSquared[j] = r2[j];
-        stopDerivativeSquared[j] = one;
         trap[j] = r2[j];
         stopIteration[j] = hn::Zero(d);
         allDone = allDone && hn::AllTrue(d, done[j]);
+        if (scaled) {
+            z[j] = {k.twoScale * z[j].w, k.twoScale * z[j].x, k.twoScale * z[j].y,
+                    k.twoScale * z[j].z};
+            r2[j] = normSquaredLanes(z[j]);
+        }
+        stopRadiusSquared[j] = r2[j];
+        stopDerivativeSquared[j] = one;
     }
     const int64_t lanes = int64_t(hn::Lanes(d));
     const int iterationCap = k.maxIterationCount + kMaxContinuation;
-    // Where the bailout is at least the certified escape radius (the default), every escape is
-    // final and |z| grows from then on: a lane stops at the estimate radius, and the lanes not
-    // escaped after N iterates are inside; the escaped mask is then needed only for the trap.
-    const bool certified = !kOrbit && k.certified;
+    int64_t running = 0;  // lane iterations of the certified loops, which keep no counts
     V iteration = hn::Zero(d);
     int n = 1;
+    if (scaled) {
+        // The hot loop, on its own so that its registers hold nothing else.
+        for (; n < iterationCap && !allDone; ++n) {
+            allDone = true;
+            const bool last = n + 1 >= k.maxIterationCount;  // z_0 .. z_{N-1} tested
+            for (size_t j = 0; j < K; ++j) {
+                derivativeSquared[j] = derivativeSquared[j] * r2[j];
+                z[j] = halfSquareStepLanes(z[j], half, k.scaledC);
+                r2[j] = normSquaredLanes(z[j]);
+                running += lanes - int64_t(hn::CountTrue(d, done[j]));
+                auto stopNow = hn::AndNot(done[j], r2[j] >= k.scaledEstimateRadiusSquared);
+                if (last) {
+                    const auto insideNow = hn::AndNot(done[j], r2[j] <= k.scaledBailoutSquared);
+                    inside[j] = hn::Or(inside[j], insideNow);
+                    stopNow = hn::Or(stopNow, insideNow);
+                }
+                stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
+                stopDerivativeSquared[j] =
+                    hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
+                done[j] = hn::Or(done[j], stopNow);
+                allDone = allDone && hn::AllTrue(d, done[j]);
+            }
+        }
+    }
     for (; n < iterationCap && !allDone; ++n) {
         allDone = true;
-        iteration = iteration + one;
+        if (!certified) iteration = iteration + one;
         for (size_t j = 0; j < K; ++j) {
             if constexpr (kQuadratic) {
                 derivativeSquared[j] = derivativeSquared[j] * (k.gainFactor * r2[j]);
@@ -143,6 +240,7 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
             }
             r2[j] = normSquaredLanes(z[j]);
             if (certified) {
+                running += lanes - int64_t(hn::CountTrue(d, done[j]));
                 auto stopNow = hn::AndNot(done[j], r2[j] >= k.estimateRadiusSquared);
                 if (n + 1 >= k.maxIterationCount) {
                     const auto insideNow = hn::AndNot(done[j], r2[j] <= k.bailoutSquared);
@@ -152,7 +250,6 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
                 stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
                 stopDerivativeSquared[j] =
                     hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
-                stopIteration[j] = hn::IfThenElse(stopNow, iteration, stopIteration[j]);
                 done[j] = hn::Or(done[j], stopNow);
                 allDone = allDone && hn::AllTrue(d, done[j]);
                 continue;
@@ -180,22 +277,22 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
             allDone = allDone && hn::AllTrue(d, done[j]);
         }
     }
+    counters.laneIterations += running;
     for (size_t j = 0; j < K; ++j) {
         const auto unfinished = hn::Not(done[j]);  // the continuation cap ended them
         V radiusSquared = hn::IfThenElse(unfinished, r2[j], stopRadiusSquared[j]);
+        if (scaled) radiusSquared = radiusSquared * k.inverseFourScaleSquared;
         V derivative = hn::IfThenElse(unfinished, derivativeSquared[j], stopDerivativeSquared[j]);
-        stopIteration[j] = hn::IfThenElse(unfinished, iteration, stopIteration[j]);
-        // Utilisation: each lane did useful work until it stopped; the slots are all lanes.
-        counters.laneIterations +=
-            int64_t(hn::GetLane(hn::SumOfLanes(d, hn::IfThenElseZero(live[j], stopIteration[j]))));
         counters.laneSlots += lanes * int64_t(n - 1);
-        // d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2) ln |z|^2; an overflowed |z'|^2
-        // gives 0, which is right: the distance is then far below any step.
-        V distance =
-            hn::Set(d, T(0.25)) * hn::Sqrt(radiusSquared / derivative) * hn::Log(d, radiusSquared);
-        distance = hn::Max(hn::Zero(d), distance) * k.stepScale;
+        if (!certified) {
+            stopIteration[j] = hn::IfThenElse(unfinished, iteration, stopIteration[j]);
+            // Utilisation: each lane did useful work until it stopped; the slots are all lanes.
+            counters.laneIterations += int64_t(
+                hn::GetLane(hn::SumOfLanes(d, hn::IfThenElseZero(live[j], stopIteration[j]))));
+        }
         result[j].inside = inside[j];
-        result[j].distance = hn::IfThenZeroElse(inside[j], distance);
+        result[j].distance = hn::IfThenZeroElse(
+            inside[j], closingDistance(d, radiusSquared, derivative, k.stepScale));
         result[j].trapSquared = trap[j];
         result[j].iterations = hn::IfThenElse(inside[j], k.maxIterations, stopIteration[j]);
         result[j].radiusSquared = radiusSquared;
