@@ -584,7 +584,6 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
                           LaneCounters& counters) {
     using V = hn::Vec<D>;
     using T = hn::TFromD<D>;
-    // Only the direction matters: rescale all three together before they overflow.
     constexpr T kLarge = sizeof(T) == 4 ? T(1e30) : T(1e200);
     constexpr T kShrink = sizeof(T) == 4 ? T(1e-10) : T(1e-100);
     const LaneConstants<D> k(d, fractal);
@@ -602,10 +601,42 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
             most = std::max(most, m);
         }
         const V m = hn::Load(d, in.kind);
+        // Only the direction matters: rescale all three together before they overflow.
+        auto rescale = [&](QuaternionLanes<V>& t0, QuaternionLanes<V>& t1, QuaternionLanes<V>& t2) {
+            V largest =
+                hn::Max(normSquaredLanes(t0), hn::Max(normSquaredLanes(t1), normSquaredLanes(t2)));
+            auto huge = largest > hn::Set(d, kLarge);
+            if (!hn::AllFalse(d, huge)) {
+                const V factor = hn::IfThenElse(huge, hn::Set(d, kShrink), one);
+                t0 = {t0.w * factor, t0.x * factor, t0.y * factor, t0.z * factor};
+                t1 = {t1.w * factor, t1.x * factor, t1.y * factor, t1.z * factor};
+                t2 = {t2.w * factor, t2.x * factor, t2.y * factor, t2.z * factor};
+            }
+        };
         auto z = k.quaternionFromWorld(hn::Load(d, in.a), hn::Load(d, in.b), hn::Load(d, in.c));
         QuaternionLanes<V> t0 = k.axis0, t1 = k.axis1, t2 = k.axis2;
         V n = hn::Zero(d);
-        for (int iteration = 0; iteration < most; ++iteration) {
+        // Lanes have their own M; while every lane still runs (most of the iterations, as the
+        // M of neighbouring hits differ little), the selects that hold finished lanes are skipped.
+        const int fewest = int(hn::GetLane(hn::MinOfLanes(d, m)));
+        for (int iteration = 0; iteration < fewest; ++iteration) {
+            counters.laneIterations += int64_t(lanes);
+            counters.laneSlots += int64_t(lanes);
+            if constexpr (kQuadratic) {
+                t0 = quadraticDerivativeLanes(z, t0, k.scale);
+                t1 = quadraticDerivativeLanes(z, t1, k.scale);
+                t2 = quadraticDerivativeLanes(z, t2, k.scale);
+                z = quadraticStepLanes(z, k.scale, k.c);
+            } else {
+                t0 = powerDerivativeLanes(z, t0, k.degree, k.scale);
+                t1 = powerDerivativeLanes(z, t1, k.degree, k.scale);
+                t2 = powerDerivativeLanes(z, t2, k.degree, k.scale);
+                z = powerStepLanes(z, k.degree, k.scale, k.c);
+            }
+            n = n + one;
+            rescale(t0, t1, t2);
+        }
+        for (int iteration = fewest; iteration < most; ++iteration) {
             auto running = n < m;
             counters.laneIterations += int64_t(hn::CountTrue(d, running));
             counters.laneSlots += int64_t(lanes);
@@ -621,15 +652,7 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
                 z = select(running, powerStepLanes(z, k.degree, k.scale, k.c), z);
             }
             n = n + one;
-            V largest =
-                hn::Max(normSquaredLanes(t0), hn::Max(normSquaredLanes(t1), normSquaredLanes(t2)));
-            auto huge = largest > hn::Set(d, kLarge);
-            if (!hn::AllFalse(d, huge)) {
-                const V factor = hn::IfThenElse(huge, hn::Set(d, kShrink), one);
-                t0 = {t0.w * factor, t0.x * factor, t0.y * factor, t0.z * factor};
-                t1 = {t1.w * factor, t1.x * factor, t1.y * factor, t1.z * factor};
-                t2 = {t2.w * factor, t2.x * factor, t2.y * factor, t2.z * factor};
-            }
+            rescale(t0, t1, t2);
         }
         hn::Store(dotLanes(z, t0), d, out.a);
         hn::Store(dotLanes(z, t1), d, out.b);

@@ -12,6 +12,7 @@
 #include <png.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -32,6 +33,8 @@ namespace {
 // Larger sides are refused when reading, before any memory is allocated for them.
 constexpr png_uint_32 kMaxReadSide = 1u << 16;
 constexpr uint64_t kMaxReadPixels = uint64_t(1) << 28;
+// Pixels per parallel item of the opacity check: small images stay on the calling thread.
+constexpr int64_t kAlphaBlockPixels = 16384;
 
 struct ErrorState {
     char message[256] = "unknown libpng error";
@@ -81,39 +84,23 @@ void putPixels(const Rgba* pixels, size_t count, uint8_t* out) {
     }
 }
 
-// Whether every pixel's alpha quantises to MaxValue: checked a block at a time, each block
-// without branches (it vectorises), stopping at the first block with a lower one.
+// Whether every pixel's alpha quantises to MaxValue: checked in blocks on every core, each block
+// without branches (it vectorises); a block with a lower one ends the search.
 template <uint32_t MaxValue>
 bool allAlphaQuantiseTo(const Image& image) {
     const Rgba* pixels = image.pixels().data();
-    const size_t count = image.pixels().size();
-    constexpr size_t kBlock = 4096;
-    for (size_t begin = 0; begin < count; begin += kBlock) {
-        const size_t end = std::min(count, begin + kBlock);
-        uint32_t lowest = MaxValue;
-        for (size_t i = begin; i < end; ++i)
-            lowest = std::min(lowest, quantise<MaxValue>(pixels[i].a));
-        if (lowest != MaxValue) return false;
-    }
-    return true;
-}
-
-// Pixels per parallel item when quantising: small images stay on the calling thread.
-constexpr int64_t kQuantiseChunkPixels = 16384;
-
-// The samples of every pixel, bytesPerPixel bytes each, filled with the pixels spread over
-// every core: putRange(begin, end, out) writes those of pixels [begin, end) from `out` on. Not
-// zeroed first: every byte is written.
-template <class PutRange>
-std::unique_ptr<uint8_t[]> quantisePixels(size_t pixelCount, size_t bytesPerPixel,
-                                          const PutRange& putRange) {
-    auto samples = std::make_unique_for_overwrite<uint8_t[]>(pixelCount * bytesPerPixel);
+    const int64_t count = int64_t(image.pixels().size());
+    std::atomic<bool> lower{false};
     ParallelOptions options;
-    options.chunkSize = kQuantiseChunkPixels;
-    parallelFor(int64_t(pixelCount), options, [&](int64_t begin, int64_t end, int) {
-        putRange(size_t(begin), size_t(end), samples.get() + size_t(begin) * bytesPerPixel);
+    options.chunkSize = kAlphaBlockPixels;
+    parallelFor(count, options, [&](int64_t begin, int64_t end, int) {
+        if (lower.load(std::memory_order_relaxed)) return;
+        uint32_t lowest = MaxValue;
+        for (int64_t i = begin; i < end; ++i)
+            lowest = std::min(lowest, quantise<MaxValue>(pixels[i].a));
+        if (lowest != MaxValue) lower.store(true, std::memory_order_relaxed);
     });
-    return samples;
+    return !lower.load();
 }
 
 // ---- decoding ----------------------------------------------------------------------------
@@ -226,32 +213,32 @@ std::vector<uint8_t> encodePng(const Image& image, int bitDepth) {
         bitDepth == 8 ? allAlphaQuantiseTo<255>(image) : allAlphaQuantiseTo<65535>(image);
     const PngFormat format{image.width(), image.height(), bitDepth,
                            opaque ? PngColorType::Rgb : PngColorType::Rgba};
-    const size_t bytesPerPixel = size_t(pngChannels(format.colorType) * bitDepth / 8);
-    const Rgba* pixels = image.pixels().data();
-    const size_t pixelCount = image.pixels().size();
-    const auto samples =
-        quantisePixels(pixelCount, bytesPerPixel, [&](size_t begin, size_t end, uint8_t* out) {
-            if (bitDepth == 8 && opaque)
-                putPixels<8, false>(pixels + begin, end - begin, out);
-            else if (bitDepth == 8)
-                putPixels<8, true>(pixels + begin, end - begin, out);
-            else if (opaque)
-                putPixels<16, false>(pixels + begin, end - begin, out);
-            else
-                putPixels<16, true>(pixels + begin, end - begin, out);
-        });
-    return writePngBytes(format, {samples.get(), pixelCount * bytesPerPixel});
+    const size_t width = size_t(image.width());
+    // Each row quantised as the writer asks for it.
+    return writePngRows(format, [&](size_t y, uint8_t* out) {
+        const Rgba* row = &image.at(0, int(y));
+        if (bitDepth == 8 && opaque)
+            putPixels<8, false>(row, width, out);
+        else if (bitDepth == 8)
+            putPixels<8, true>(row, width, out);
+        else if (opaque)
+            putPixels<16, false>(row, width, out);
+        else
+            putPixels<16, true>(row, width, out);
+        return static_cast<const uint8_t*>(out);
+    });
 }
 
 std::vector<uint8_t> encodeGrayPng16(const GrayImage& image) {
     const PngFormat format{image.width(), image.height(), 16, PngColorType::Gray};
     const float* values = image.pixels().data();
-    const size_t pixelCount = image.pixels().size();
-    const auto samples = quantisePixels(pixelCount, 2, [&](size_t begin, size_t end, uint8_t* out) {
-        for (size_t i = begin; i < end; ++i)
-            out = putSample<16>(out, values[i]);
+    const size_t width = size_t(image.width());
+    return writePngRows(format, [&](size_t y, uint8_t* out) {
+        uint8_t* sample = out;
+        for (size_t x = 0; x < width; ++x)
+            sample = putSample<16>(sample, values[y * width + x]);
+        return static_cast<const uint8_t*>(out);
     });
-    return writePngBytes(format, {samples.get(), pixelCount * 2});
 }
 
 void writePng(const std::string& path, const Image& image, int bitDepth) {

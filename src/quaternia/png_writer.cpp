@@ -187,12 +187,15 @@ class RawDeflater {
     z_stream stream_{};
 };
 
-void checkFormat(const PngFormat& format, size_t sampleBytes) {
+void checkFormat(const PngFormat& format) {
     if (format.width <= 0 || format.height <= 0)
         throw std::invalid_argument("cannot encode an empty image as PNG");
     if (format.bitDepth != 8 && format.bitDepth != 16)
         throw std::invalid_argument("PNG bit depth must be 8 or 16, got " +
                                     std::to_string(format.bitDepth));
+}
+void checkFormat(const PngFormat& format, size_t sampleBytes) {
+    checkFormat(format);
     if (sampleBytes != pngRowBytes(format) * size_t(format.height))
         throw std::invalid_argument("PNG samples do not match the image's size");
 }
@@ -207,38 +210,67 @@ size_t pngRowBytes(const PngFormat& format) {
 std::vector<uint8_t> writePngBytes(const PngFormat& format, std::span<const uint8_t> samples,
                                    int threads) {
     checkFormat(format, samples.size());
+    const size_t rowBytes = pngRowBytes(format);
+    return writePngRows(
+        format, [&](size_t y, uint8_t*) { return samples.data() + y * rowBytes; }, threads);
+}
+
+std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& rowAt, int threads) {
+    checkFormat(format);
     const size_t height = size_t(format.height);
     const size_t rowBytes = pngRowBytes(format);
     const size_t filteredRowBytes = rowBytes + 1;
     const size_t bytesPerPixel = size_t(pngChannels(format.colorType) * format.bitDepth / 8);
     const PieceLayout pieces(height, filteredRowBytes);
+    // Each piece is filtered and deflated by one task, from the rows the source gives it: its
+    // own, and before them those whose filtered bytes are its dictionary (the 32 KiB before it)
+    // and the one row above those that Paeth predicts from. A piece's dictionary rows are
+    // filtered twice, by it and by the piece before; nothing is shared between tasks, and the
+    // samples never exist as a whole image.
+    const size_t dictionaryRows = (kDictionaryBytes + filteredRowBytes - 1) / filteredRowBytes;
 
     ParallelOptions options;
     options.threads = threads;
     options.chunkSize = 1;  // one piece at a time, so uneven pieces balance
 
-    // Filter everything first: each piece's dictionary is the filtered tail of the one before.
     // The zlib stream's checksum is of the filtered bytes, summed piece by piece.
-    const auto filtered = std::make_unique_for_overwrite<uint8_t[]>(height * filteredRowBytes);
     std::vector<uLong> pieceAdler(pieces.count);
+    // Each piece on its own deflate stream, primed with the 32 KiB before it; the sync flush
+    // ends it on a byte boundary with the block open for the next, so the pieces simply join.
+    // The first carries the zlib header, the last the final block and the checksum (appended
+    // below, once every piece's sum is known).
+    std::vector<ByteBuffer> compressed(pieces.count);
     parallelFor(int64_t(pieces.count), options, [&](int64_t begin, int64_t end, int) {
-        std::vector<uint8_t> zeroRow;
+        std::vector<uint8_t> zeroRow(rowBytes, 0), scratch[2];
+        scratch[0].resize(rowBytes);
+        scratch[1].resize(rowBytes);
+        std::vector<uint8_t> filtered;
         for (size_t piece = size_t(begin); piece < size_t(end); ++piece) {
             const size_t firstRow = pieces.firstRow(piece), endRow = pieces.endRow(piece, height);
-            for (size_t y = firstRow; y < endRow; ++y) {
-                const uint8_t* previous = nullptr;
-                if (y == 0) {
-                    zeroRow.assign(rowBytes, 0);
-                    previous = zeroRow.data();
-                } else {
-                    previous = samples.data() + (y - 1) * rowBytes;
-                }
-                filterRowPaeth(samples.data() + y * rowBytes, previous, rowBytes, bytesPerPixel,
-                               filtered.get() + y * filteredRowBytes);
+            const size_t filterFrom = firstRow - std::min(firstRow, dictionaryRows);
+            filtered.resize((endRow - filterFrom) * filteredRowBytes);
+            const uint8_t* previous =
+                filterFrom == 0 ? zeroRow.data() : rowAt(filterFrom - 1, scratch[0].data());
+            int next =
+                1;  // the scratch row the source may write next; previous may be in the other
+            for (size_t y = filterFrom; y < endRow; ++y) {
+                const uint8_t* row = rowAt(y, scratch[next].data());
+                filterRowPaeth(row, previous, rowBytes, bytesPerPixel,
+                               filtered.data() + (y - filterFrom) * filteredRowBytes);
+                previous = row;
+                next ^= 1;
             }
-            pieceAdler[piece] =
-                adler32_z(adler32_z(0, nullptr, 0), filtered.get() + firstRow * filteredRowBytes,
-                          (endRow - firstRow) * filteredRowBytes);
+            const uint8_t* own = filtered.data() + (firstRow - filterFrom) * filteredRowBytes;
+            const size_t ownBytes = (endRow - firstRow) * filteredRowBytes;
+            pieceAdler[piece] = adler32_z(adler32_z(0, nullptr, 0), own, ownBytes);
+
+            ByteBuffer& out = compressed[piece];
+            if (piece == 0) out.append(kZlibHeader, sizeof kZlibHeader);
+            RawDeflater deflater;
+            const size_t dictionary = std::min(size_t(own - filtered.data()), kDictionaryBytes);
+            deflater.prime(own - dictionary, dictionary);
+            deflater.compress(own, ownBytes, piece + 1 == pieces.count ? Z_FINISH : Z_SYNC_FLUSH,
+                              out);
         }
     });
     uLong adler = adler32_z(0, nullptr, 0);
@@ -246,30 +278,9 @@ std::vector<uint8_t> writePngBytes(const PngFormat& format, std::span<const uint
         const size_t rows = pieces.endRow(piece, height) - pieces.firstRow(piece);
         adler = adler32_combine(adler, pieceAdler[piece], z_off_t(rows * filteredRowBytes));
     }
-
-    // Each piece on its own deflate stream, primed with the 32 KiB before it; the sync flush
-    // ends it on a byte boundary with the block open for the next, so the pieces simply join.
-    // The first carries the zlib header, the last the final block and the checksum.
-    std::vector<ByteBuffer> compressed(pieces.count);
-    parallelFor(int64_t(pieces.count), options, [&](int64_t begin, int64_t end, int) {
-        for (size_t piece = size_t(begin); piece < size_t(end); ++piece) {
-            const size_t start = pieces.firstRow(piece) * filteredRowBytes;
-            const size_t stop = pieces.endRow(piece, height) * filteredRowBytes;
-            const bool last = piece + 1 == pieces.count;
-            ByteBuffer& out = compressed[piece];
-            if (piece == 0) out.append(kZlibHeader, sizeof kZlibHeader);
-            RawDeflater deflater;
-            const size_t dictionary = std::min(start, kDictionaryBytes);
-            deflater.prime(filtered.get() + start - dictionary, dictionary);
-            deflater.compress(filtered.get() + start, stop - start, last ? Z_FINISH : Z_SYNC_FLUSH,
-                              out);
-            if (last) {
-                uint8_t checksum[4];
-                putU32(checksum, uint32_t(adler));
-                out.append(checksum, sizeof checksum);
-            }
-        }
-    });
+    uint8_t checksum[4];
+    putU32(checksum, uint32_t(adler));
+    compressed.back().append(checksum, sizeof checksum);
 
     size_t total = sizeof kPngSignature + 25 + 12;  // signature, IHDR, IEND
     for (const ByteBuffer& piece : compressed)

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -41,5 +42,17 @@ size_t pngRowBytes(const PngFormat& format);
 // std::runtime_error if zlib fails, std::bad_alloc when memory runs out.
 std::vector<uint8_t> writePngBytes(const PngFormat& format, std::span<const uint8_t> samples,
                                    int threads = 0);
+
+// Row y's samples (pngRowBytes(format) bytes, as above): either a pointer into the caller's own
+// rows, or `scratch` (room for one row) filled and returned. Called from several threads at
+// once, and for some rows more than once, so it must be a pure function of y.
+using PngRowSource = std::function<const uint8_t*(size_t y, uint8_t* scratch)>;
+
+// writePngBytes with the rows made as they are needed, piece by piece on every core (a frame's
+// quantised samples then never exist whole: a 1080p frame's 6 MB and two passes over them less).
+// The same bytes as writePngBytes of the same rows. Throws as writePngBytes, but for the
+// number of samples.
+std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& rowAt,
+                                  int threads = 0);
 
 }  // namespace quaternia
