@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <random>
 #include <stdexcept>
@@ -100,6 +102,30 @@ TEST(PngWriter, SameBytesForAnyNumberOfThreads) {
         EXPECT_EQ(writePngBytes(format, samples, 8), one);
         EXPECT_EQ(writePngBytes(format, samples, 0), one);
     }
+}
+
+// Rows made on demand into the writer's scratch row (as encodePng quantises them) give the bytes
+// of the same rows handed over whole, and the source is asked only for rows that exist.
+TEST(PngWriter, RowsMadeOnDemandGiveTheSameBytes) {
+    const PngFormat format{640, 900, 8, PngColorType::Rgb};
+    const std::vector<uint8_t> samples = testSamples(format, 4);
+    const size_t rowBytes = pngRowBytes(format);
+    std::atomic<size_t> calls{0}, outside{0};
+    const std::vector<uint8_t> made = writePngRows(
+        format,
+        [&](size_t y, uint8_t* scratch) {
+            ++calls;
+            if (y >= size_t(format.height)) {
+                ++outside;
+                y = 0;
+            }
+            std::copy_n(samples.data() + y * rowBytes, rowBytes, scratch);
+            return static_cast<const uint8_t*>(scratch);
+        },
+        2);
+    EXPECT_EQ(made, writePngBytes(format, samples, 1));
+    EXPECT_EQ(outside.load(), 0u);
+    EXPECT_GE(calls.load(), size_t(format.height));
 }
 
 // Signature, IHDR, several IDAT chunks (one per piece) whose data is one zlib stream of the
