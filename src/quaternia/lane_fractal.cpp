@@ -28,7 +28,7 @@ std::optional<LaneFractal> LaneFractal::from(const Fractal& fractal, Precision p
 }
 
 void RayBatch::clear() {
-    for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tNear, &tFar})
+    for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tNear, &tFar, &spread})
         v->clear();
 }
 

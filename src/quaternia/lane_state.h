@@ -43,6 +43,7 @@ struct RayLanes {
     QUATERNIA_LANE_ARRAY(T, lastStep);
     QUATERNIA_LANE_ARRAY(T, relaxation);
     QUATERNIA_LANE_ARRAY(T, plainStep);
+    QUATERNIA_LANE_ARRAY(T, spread);  // a cone's radius at t = 0 (RayBatch::spread)
     int64_t ray[kLaneCapacity<T>] = {};
 
     // Puts ray `next` of the batch into `lane` (and advances next), or empties the lane when the
@@ -65,6 +66,7 @@ struct RayLanes {
         confirming[lane] = startAtZero ? T(1) : T(0);
         steps[lane] = T(0);
         radius[lane] = lastStep[lane] = plainStep[lane] = T(0);
+        spread[lane] = rays.spread.empty() ? T(0) : T(rays.spread[i]);
         relaxation[lane] = T(1);  // a shadow ray's first step: no step behind it to check
     }
 };

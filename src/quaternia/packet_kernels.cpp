@@ -370,6 +370,7 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
     const V confirmBudget = hn::Set(d, T(march.cone ? 0 : kMarchConfirmBudget));
     const V coneShrink = march.cone ? one : zero;
     const V maxSteps = hn::Set(d, T(march.maxSteps));
+    const bool spreads = march.cone && !rays.spread.empty();
     // Cones step plainly (their steps are already short of the estimate).
     const V relaxation = hn::Set(d, T(march.relaxation));
     const M relaxing = hn::FirstN(d, march.cone || !(march.relaxation > 1) ? 0 : hn::Lanes(d));
@@ -382,7 +383,8 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
         uint64_t doneLanes = 0;  // bit per lane of the rays that ended this step
         for (size_t j = 0; j < K; ++j) {
             const size_t o = j * lanes;
-            const V footprint = pixelAngle * t[j];
+            const V footprint = spreads ? hn::MulAdd(pixelAngle, t[j], hn::Load(d, s.spread + o))
+                                        : pixelAngle * t[j];
             const V distance = e[j].distance;
             // The point before (tOutside), its estimate (radius), its plain step and the step
             // taken from it if that was longer (lastStep, else 0): where the plain step and this

@@ -52,6 +52,9 @@ struct LaneCounters {
 // Rays as structure of arrays; t runs over [tNear, tFar] (the bounding sphere).
 struct RayBatch {
     std::vector<double> ox, oy, oz, dx, dy, dz, tNear, tFar;
+    // Cones only (CameraMarch::cone), and optional: each cone's radius at t = 0, to which
+    // pixelAngle * t adds (a cylinder where pixelAngle is 0). Empty means 0 for every ray.
+    std::vector<double> spread;
     void clear();
     void push(const Ray& ray, double near, double far) {
         ox.push_back(ray.origin.x), oy.push_back(ray.origin.y), oz.push_back(ray.origin.z);
@@ -75,7 +78,8 @@ struct CameraMarch {
     double pixelAngle = 1e-3;  // footprint per unit of t
     int maxSteps = 5000;
     double relaxation = 1;  // sphereTrace's over-relaxation (march.h); ignored by cones
-    // Cone marching: each ray stands for a cone of radius pixelAngle * t about it, steps by the
+    // Cone marching: each ray stands for a cone of radius pixelAngle * t (plus the ray's
+    // spread, RayBatch::spread) about it, steps by the
     // estimate less that radius (so the ball of the estimate covers the cone's next stretch),
     // and ends (Grazing) as soon as the estimate is below epsilon radii (epsilon > 1, so that
     // steps stay at least (epsilon - 1) radii long): no confirmation. A miss before maxSteps

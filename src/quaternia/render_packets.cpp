@@ -1,6 +1,7 @@
 #include "render_packets.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "render.h"
@@ -9,12 +10,13 @@ namespace quaternia {
 
 PacketTileRenderer::PacketTileRenderer(const LaneFractal& lanes, const Camera& camera,
                                        const Shader& shader, const MarchSettings& march,
-                                       int samples)
+                                       int samples, bool shadowCylinders)
     : lanes_(lanes),
       camera_(camera),
       shader_(shader),
       march_{march.epsilon, march.pixelAngle, march.maxSteps, march.relaxation},
       samples_(samples),
+      shadowCylinders_(shadowCylinders),
       boundingRadius_(std::sqrt(lanes.bailoutSquared)),
       lightConstants_(shader.lightConstants()),
       coneRatio_(coneRatio(camera)) {}
@@ -45,6 +47,9 @@ double PacketTileRenderer::coneRatio(const Camera& camera) {
 void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixels,
                                 PacketTileStats& stats) {
     const int width = tile.x1 - tile.x0;
+    tileWidth_ = width;
+    tileBlocks_ =
+        (width + kConeBlock - 1) / kConeBlock * ((tile.y1 - tile.y0 + kConeBlock - 1) / kConeBlock);
     pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{});
     marchCones(tile, stats);
     const int blocksAcross = (width + kConeBlock - 1) / kConeBlock;
@@ -166,6 +171,7 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
         shadowRays_.push(ray, 0, interval->tFar);
         shadowHit_.push_back(int(h));
     }
+    if (shadowCylinders_ && shader_.shadows() == Shadows::Hard) clipShadowRays(stats);
     ShadowMarch shadowMarch;
     shadowMarch.minimumStep = shader_.shadowMinimumStep();
     shadowMarch.softness = shader_.shadowSoftness();
@@ -174,6 +180,14 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
     shadowMarch.relaxation = Shader::kShadowRelaxation;
     shadowMarch.maxRelaxation = Shader::kShadowMaxRelaxation;
     traceShadowRays(lanes_, shadowMarch, shadowRays_, shadowVisibility_, stats.shading);
+    // The rays that the cylinders cleared whole were left out of the march (clipShadowRays).
+    if (!shadowClear_.empty()) {
+        marchedVisibility_.swap(shadowVisibility_);
+        shadowVisibility_.assign(shadowHit_.size(), 1.0);
+        for (size_t r = 0, marched = 0; r < shadowHit_.size(); ++r) {
+            if (!shadowClear_[r]) shadowVisibility_[r] = marchedVisibility_[marched++];
+        }
+    }
 
     if (shader_.occlusionEnabled()) {
         occlusionPoints_.clear();
@@ -219,6 +233,107 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
         s.occlusion[h] = float(occlusion);
     }
     lightSurfaces(lightConstants_, surfaces_);  // the colours: surfaces_.red, green, blue
+}
+
+void PacketTileRenderer::clipShadowRays(PacketTileStats& stats) {
+    // Hard shadow rays of one block of pixels are parallel (the key light is a direction) and
+    // start within a few footprints of each other. A cylinder about them that holds all their
+    // origins, marched as a cone of constant radius from the far side of the bounding sphere
+    // towards them (step: the estimate less the radius), proves the set absent from the part
+    // of every ray beyond where it stopped (as the cones of the camera rays do, marchCones), so
+    // each ray is marched only from its origin to there; a cylinder that gets past every
+    // origin clears its rays whole. It stops where the set comes within 1.5 radii: at an
+    // occluder, whose rays then meet it on their own, or at the surface the rays start from.
+    const size_t count = shadowHit_.size();
+    shadowClear_.clear();
+    if (count == 0) return;
+    // The rays grouped by block, in order within each (a counting sort: hits come in rows).
+    const int blocksAcross = (tileWidth_ + kConeBlock - 1) / kConeBlock;
+    blockOfRay_.resize(count);
+    blockStarts_.assign(size_t(tileBlocks_) + 1, 0);
+    for (size_t r = 0; r < count; ++r) {
+        const int pixel = hits_[size_t(shadowHit_[r])].pixel;
+        const int block =
+            pixel / tileWidth_ / kConeBlock * blocksAcross + pixel % tileWidth_ / kConeBlock;
+        blockOfRay_[r] = block;
+        ++blockStarts_[size_t(block) + 1];
+    }
+    for (size_t b = 0; b < size_t(tileBlocks_); ++b)
+        blockStarts_[b + 1] += blockStarts_[b];
+    shadowOrder_.resize(count);
+    blockFill_.assign(blockStarts_.begin(), blockStarts_.end() - 1);
+    for (size_t r = 0; r < count; ++r)
+        shadowOrder_[size_t(blockFill_[size_t(blockOfRay_[r])]++)] = int(r);
+
+    const Vector3d light = shader_.lightDirection();
+    auto origin = [&](size_t r) {
+        return Point3d(shadowRays_.ox[r], shadowRays_.oy[r], shadowRays_.oz[r]);
+    };
+    cylinders_.clear();
+    cylinderRays_.clear();  // the rays of each cylinder: a range of shadowOrder_
+    for (size_t block = 0; block < size_t(tileBlocks_); ++block) {
+        const size_t first = size_t(blockStarts_[block]), end = size_t(blockStarts_[block + 1]);
+        if (end - first >= kMinCylinderRays) {
+            Vector3d sum;
+            for (size_t k = first; k < end; ++k)
+                sum += Vector3d(origin(size_t(shadowOrder_[k])));
+            const Point3d centre(sum / double(end - first));
+            // The widest offset of an origin from the axis, and the axial extent from the
+            // nearest origin to the farthest exit from the bounding sphere.
+            double widest = 0, nearest = std::numeric_limits<double>::infinity();
+            double farthest = -nearest;
+            for (size_t k = first; k < end; ++k) {
+                const size_t r = size_t(shadowOrder_[k]);
+                const Vector3d offset = origin(r) - centre;
+                const double along = dot(offset, light);
+                widest = std::max(widest, dot(offset, offset) - along * along);
+                nearest = std::min(nearest, along);
+                farthest = std::max(farthest, along + shadowRays_.tFar[r]);
+            }
+            // A margin for rounding, and never a zero radius.
+            const double radius =
+                std::sqrt(std::max(0.0, widest)) * (1 + 1e-6) + 1e-9 * boundingRadius_;
+            cylinders_.push(Ray{centre + light * farthest, -light}, 0, farthest - nearest);
+            cylinders_.spread.push_back(radius);
+            cylinderRays_.push_back({first, end});
+        }
+    }
+    if (cylinders_.size() == 0) return;
+    CameraMarch cylinderMarch = march_;
+    cylinderMarch.cone = true;
+    cylinderMarch.epsilon = 1.5;
+    cylinderMarch.pixelAngle = 0;
+    traceCameraRays(lanes_, cylinderMarch, cylinders_, cylinderResults_, stats.shading);
+
+    // A cylinder is clear from its far end to tOutside (to its end where it missed); on a ray,
+    // that is from (far end - origin) . light - tOutside on.
+    shadowClear_.assign(count, 0);
+    for (size_t c = 0; c < cylinders_.size(); ++c) {
+        const TraceResult& result = cylinderResults_[c];
+        const bool whole = result.end == TraceEnd::Miss && result.steps < march_.maxSteps;
+        const Point3d farEnd(cylinders_.ox[c], cylinders_.oy[c], cylinders_.oz[c]);
+        for (size_t k = cylinderRays_[c].first; k < cylinderRays_[c].second; ++k) {
+            const size_t r = size_t(shadowOrder_[k]);
+            const double clearFrom = dot(farEnd - origin(r), light) - result.tOutside;
+            if (whole || clearFrom <= 0) {
+                shadowClear_[r] = 1;
+            } else {
+                shadowRays_.tFar[r] = std::min(shadowRays_.tFar[r], clearFrom);
+            }
+        }
+    }
+    // The batch to march: the rays not cleared whole, in their order.
+    size_t kept = 0;
+    for (size_t r = 0; r < count; ++r) {
+        if (shadowClear_[r]) continue;
+        for (auto* v : {&shadowRays_.ox, &shadowRays_.oy, &shadowRays_.oz, &shadowRays_.dx,
+                        &shadowRays_.dy, &shadowRays_.dz, &shadowRays_.tNear, &shadowRays_.tFar})
+            (*v)[kept] = (*v)[r];
+        ++kept;
+    }
+    for (auto* v : {&shadowRays_.ox, &shadowRays_.oy, &shadowRays_.oz, &shadowRays_.dx,
+                    &shadowRays_.dy, &shadowRays_.dz, &shadowRays_.tNear, &shadowRays_.tFar})
+        v->resize(kept);
 }
 
 }  // namespace quaternia

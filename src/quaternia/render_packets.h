@@ -4,6 +4,7 @@
 // both paths make the same picture up to the precision of the lanes.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "camera.h"
@@ -30,8 +31,10 @@ struct PacketTileStats {
 // One per thread: owns the batches, so that after the first tiles nothing is allocated.
 class PacketTileRenderer {
   public:
+    // shadowCylinders: hard shadow rays are shortened by a cylinder per block (clipShadowRays),
+    // which changes no pixel; false only to check that.
     PacketTileRenderer(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
-                       const MarchSettings& march, int samples);
+                       const MarchSettings& march, int samples, bool shadowCylinders = true);
 
     // Marches and shades every sample of every pixel of the tile; pixels[(y - y0) * width +
     // (x - x0)] receives the sums of pixel (x, y).
@@ -44,12 +47,18 @@ class PacketTileRenderer {
     static constexpr int kConeBlock = 4;
     void marchCones(const Tile& tile, PacketTileStats& stats);
     void shadeHits(PacketTileStats& stats);
+    // Hard shadows: one cylinder about the shadow rays of each block of kConeBlock^2 pixels
+    // with at least kMinCylinderRays of them shortens them to where it stopped, and leaves out
+    // of shadowRays_ those it cleared whole (shadowClear_).
+    static constexpr size_t kMinCylinderRays = 4;
+    void clipShadowRays(PacketTileStats& stats);
 
     LaneFractal lanes_;
     const Camera& camera_;
     const Shader& shader_;
     CameraMarch march_;
     int samples_;
+    bool shadowCylinders_;
     double boundingRadius_;
     LightConstants lightConstants_;
     // The cones' radius per unit of t, for every block of the image (coneRatio()).
@@ -79,7 +88,14 @@ class PacketTileRenderer {
     std::vector<Vector3d> normals_;
     RayBatch shadowRays_;
     std::vector<int> shadowHit_;
-    std::vector<double> shadowVisibility_;
+    std::vector<double> shadowVisibility_, marchedVisibility_;
+    int tileWidth_ = 0, tileBlocks_ = 0;
+    std::vector<int> blockOfRay_, blockStarts_, blockFill_;
+    std::vector<int> shadowOrder_;  // the shadow rays, block by block
+    RayBatch cylinders_;
+    std::vector<std::pair<size_t, size_t>> cylinderRays_;
+    std::vector<TraceResult> cylinderResults_;
+    std::vector<uint8_t> shadowClear_;
     PointBatch occlusionPoints_;
     std::vector<double> occlusionDistances_;
     SurfaceBatch surfaces_;  // each hit's surface sample and, once lit, its colour

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -81,6 +82,50 @@ TEST(PacketRender, ShadedImageMatchesTheScalarPath) {
                     absolute / hits, signedSum / hits);
         EXPECT_LT(absolute / hits, 0.03);
         EXPECT_LT(std::abs(signedSum / hits), 0.003);
+    }
+}
+
+// Hard shadows: the shadow rays of each block are shortened to where a cylinder about them
+// stopped, or left out where it cleared them whole (PacketTileRenderer::clipShadowRays). A
+// cylinder only proves the set absent where the rays would have found it absent, so every
+// pixel keeps its light, with fewer estimates.
+TEST(PacketRender, ShadowCylindersChangeNoPixel) {
+    for (const char* id : {"case01_sqr_A", "case06_sqr_A_tilt"}) {
+        Scene scene = testing::referenceScene(id);
+        scene.shading.shadows = Shadows::Hard;
+        const Fractal fractal = Fractal::fromScene(scene);
+        const Camera camera(scene.camera, 320, 240);
+        const Shader shader(scene.shading, fractal);
+        const MarchSettings march{MarchMethod::SphereTracing, 0, scene.render.epsilon,
+                                  camera.pixelFootprint(1.0), scene.render.maxSteps};
+        const auto lanes = LaneFractal::from(fractal, Precision::Single);
+        ASSERT_TRUE(lanes);
+        PacketTileRenderer plain(*lanes, camera, shader, march, 1, false);
+        PacketTileRenderer clipped(*lanes, camera, shader, march, 1, true);
+        int64_t plainEstimates = 0, clippedEstimates = 0;
+        int hits = 0, changed = 0;
+        for (int y0 = 0; y0 < 240; y0 += 32) {
+            for (int x0 = 0; x0 < 320; x0 += 32) {
+                const Tile tile{x0, y0, std::min(x0 + 32, 320), std::min(y0 + 32, 240)};
+                std::vector<PixelSamples> a, b;
+                PacketTileStats statsA, statsB;
+                plain.render(tile, a, statsA);
+                clipped.render(tile, b, statsB);
+                plainEstimates += statsA.shading.estimates;
+                clippedEstimates += statsB.shading.estimates;
+                ASSERT_EQ(a.size(), b.size());
+                for (size_t i = 0; i < a.size(); ++i) {
+                    ASSERT_EQ(a[i].hits, b[i].hits);
+                    hits += a[i].hits;
+                    changed += length(a[i].sum - b[i].sum) > 1e-6;
+                }
+            }
+        }
+        EXPECT_GT(hits, 10000) << id;
+        EXPECT_LE(changed, hits / 1000) << id;
+        EXPECT_LT(double(clippedEstimates), 0.95 * double(plainEstimates)) << id;
+        std::printf("%s: %d of %d hit pixels changed, shading estimates %lld -> %lld\n", id,
+                    changed, hits, (long long)plainEstimates, (long long)clippedEstimates);
     }
 }
 
