@@ -1,0 +1,316 @@
+// The distance estimate in SIMD lanes, shared by the kernels of packet_kernels.cpp: the
+// fractal's constants as lanes, JuliaSet::estimate for K vectors of points at once
+// (estimateLanes), and the estimates along the rays held in lanes (estimateAlongRays).
+//
+// Like julia_lanes-inl.h, this file has no namespace of its own: packet_kernels.cpp includes it
+// inside its per-target namespace, once per SIMD target (the HWY_TARGET_TOGGLE guard below lets
+// it in again for each), after hwy/highway.h, julia_lanes-inl.h, lane_state.h and
+// packet_kernels.h, with hn naming the target's Highway namespace.
+
+#if defined(QUATERNIA_ESTIMATE_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef QUATERNIA_ESTIMATE_LANES_INL_H_
+#undef QUATERNIA_ESTIMATE_LANES_INL_H_
+#else
+#define QUATERNIA_ESTIMATE_LANES_INL_H_
+#endif
+
+// The fractal's constants broadcast to lanes of type T.
+template <class D>
+struct LaneConstants {
+    using V = hn::Vec<D>;
+    QuaternionLanes<V> origin, axis0, axis1, axis2, c;
+    V scale, bailoutSquared, escapeRadiusSquared, estimateRadiusSquared, stepScale, maxIterations;
+    V gainFactor;  // 4 s^2 for d = 2, s^2 d^2 otherwise
+    // The float loop of s z^2 + c in u = 2 s z (estimateLanes): 2 s, 2 s c, the bailout and
+    // estimate radii squared times 4 s^2, and 1 / (4 s^2).
+    V twoScale, scaledBailoutSquared, scaledEstimateRadiusSquared, inverseFourScaleSquared;
+    QuaternionLanes<V> scaledC;
+    int degree, maxIterationCount;
+    bool certified;  // bailout >= the certified escape radius: every escape is final
+
+    LaneConstants(D d, const LaneFractal& f)
+        : degree(f.degree),
+          maxIterationCount(f.maxIterations),
+          certified(f.bailoutSquared >= f.escapeRadiusSquared) {
+        using T = hn::TFromD<D>;
+        auto lanes = [&](const std::array<double, 4>& q) {
+            return QuaternionLanes<V>{hn::Set(d, T(q[0])), hn::Set(d, T(q[1])), hn::Set(d, T(q[2])),
+                                      hn::Set(d, T(q[3]))};
+        };
+        origin = lanes(f.origin);
+        axis0 = lanes(f.axes[0]);
+        axis1 = lanes(f.axes[1]);
+        axis2 = lanes(f.axes[2]);
+        c = lanes(f.c);
+        scale = hn::Set(d, T(f.scale));
+        bailoutSquared = hn::Set(d, T(f.bailoutSquared));
+        escapeRadiusSquared = hn::Set(d, T(f.escapeRadiusSquared));
+        estimateRadiusSquared = hn::Set(d, T(continuationRadiusSquared<T>(f.degree)));
+        stepScale = hn::Set(d, T(f.stepScale));
+        maxIterations = hn::Set(d, T(f.maxIterations));
+        gainFactor = hn::Set(d, T(f.scale * f.scale * f.degree * f.degree));
+        const double fourScaleSquared = 4 * f.scale * f.scale;
+        twoScale = hn::Set(d, T(2 * f.scale));
+        scaledC = lanes({2 * f.scale * f.c[0], 2 * f.scale * f.c[1], 2 * f.scale * f.c[2],
+                         2 * f.scale * f.c[3]});
+        scaledBailoutSquared = hn::Set(d, T(fourScaleSquared * f.bailoutSquared));
+        scaledEstimateRadiusSquared =
+            hn::Set(d, T(fourScaleSquared * continuationRadiusSquared<T>(f.degree)));
+        inverseFourScaleSquared = hn::Set(d, T(1 / fourScaleSquared));
+    }
+
+    // The slice: a 3D point to its quaternion.
+    QuaternionLanes<V> quaternionFromWorld(V x, V y, V z) const {
+        return {hn::MulAdd(z, axis2.w, hn::MulAdd(y, axis1.w, hn::MulAdd(x, axis0.w, origin.w))),
+                hn::MulAdd(z, axis2.x, hn::MulAdd(y, axis1.x, hn::MulAdd(x, axis0.x, origin.x))),
+                hn::MulAdd(z, axis2.y, hn::MulAdd(y, axis1.y, hn::MulAdd(x, axis0.y, origin.y))),
+                hn::MulAdd(z, axis2.z, hn::MulAdd(y, axis1.z, hn::MulAdd(x, axis0.z, origin.z)))};
+    }
+};
+
+template <class D>
+struct LaneEstimate {
+    hn::Vec<D> distance, trapSquared, radiusSquared;
+    hn::Vec<D> iterations;  // with kOrbit only (estimateLanes)
+    hn::Mask<D> inside;
+};
+
+template <class V, class M>
+HWY_INLINE QuaternionLanes<V> select(M mask, const QuaternionLanes<V>& yes,
+                                     const QuaternionLanes<V>& no) {
+    return {hn::IfThenElse(mask, yes.w, no.w), hn::IfThenElse(mask, yes.x, no.x),
+            hn::IfThenElse(mask, yes.y, no.y), hn::IfThenElse(mask, yes.z, no.z)};
+}
+
+// ln x for float lanes of positive, finite x, from x = m 2^e (m in [1, 2)): ln x = (e + log2 m)
+// ln 2, log2 m by a degree-6 polynomial in m - 1 that interpolates it at the Chebyshev nodes of
+// [1, 2] (error below 2.5e-6), lowered by that bound so that it never exceeds log2 m.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V fastLogLanes(D d, V x) {
+    using T = hn::TFromD<D>;
+    static_assert(sizeof(T) == 4, "float lanes only");
+    const hn::RebindToSigned<D> di;
+    const auto bits = hn::BitCast(di, x);
+    const V exponent = hn::ConvertTo(d, hn::ShiftRight<23>(bits) - hn::Set(di, 127));
+    const V t =
+        hn::BitCast(d, hn::Or(hn::And(bits, hn::Set(di, 0x007fffff)), hn::Set(di, 0x3f800000))) -
+        hn::Set(d, T(1));
+    V p = hn::Set(d, T(-0.0245685347));
+    p = hn::MulAdd(p, t, hn::Set(d, T(0.117613084)));
+    p = hn::MulAdd(p, t, hn::Set(d, T(-0.272697565)));
+    p = hn::MulAdd(p, t, hn::Set(d, T(0.454508492)));
+    p = hn::MulAdd(p, t, hn::Set(d, T(-0.71731278)));
+    p = hn::MulAdd(p, t, hn::Set(d, T(1.44245353)));
+    p = hn::MulAdd(p, t, hn::Set(d, T(2.44343872e-6 - 2.45e-6)));
+    return (exponent + p) * hn::Set(d, T(0.693147180559945));
+}
+
+// The closing formula of the estimate, d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2)
+// ln |z|^2, with its step scale; an overflowed |z'|^2 gives 0, which is right: the distance is
+// then far below any step. Double lanes compute it as JuliaSet::estimate does. Float lanes, whose
+// estimate is only good to a few percent anyway (the continuation stops at |z| = 100), take
+// sqrt(a / b) = a / sqrt(a b) from the reciprocal square root estimate (relative error below
+// 4e-4 on every target) and the logarithm from fastLogLanes: a division, a square root and a
+// longer logarithm less per estimate. (A margin of 1/512 below the exact value, tried to keep
+// the rounding one-sided, moved the lanes' ambient occlusion and soft shadows visibly away from
+// the scalar path's: PacketRender.ShadedImageMatchesTheScalarPath.)
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE V closingDistance(D d, V radiusSquared, V derivativeSquared, V stepScale) {
+    using T = hn::TFromD<D>;
+    V distance;
+    if constexpr (sizeof(T) == 4) {
+        const V root = hn::ApproximateReciprocalSqrt(radiusSquared * derivativeSquared);
+        distance = hn::Set(d, T(0.25)) * radiusSquared * root * fastLogLanes(d, radiusSquared);
+    } else {
+        distance = hn::Set(d, T(0.25)) * hn::Sqrt(radiusSquared / derivativeSquared) *
+                   hn::Log(d, radiusSquared);
+    }
+    return hn::Max(hn::Zero(d), distance) * stepScale;
+}
+
+// JuliaSet::estimate (distance.cpp) in lanes: iterate while |z| <= bailout and fewer than N
+// iterates were tested, then, where escape is certain, continue to the estimate radius. Every
+// lane runs the same iterations (no per-lane selects on z, which would lengthen the dependency
+// chain); a lane whose estimate is final is marked done and its |z|^2 and |z'|^2 are kept at
+// that iteration, while its z runs on unused (it may overflow; nothing reads it). The loop ends
+// when every lane is done. kOrbit also keeps the orbit trap and the iteration count.
+//
+// The marching kernels' case, a certified bailout without the orbit, is the hot loop of the
+// renderer. There, float lanes of s z^2 + c iterate u = 2 s z instead of z: u <- u^2 / 2 + 2 s c
+// and |u'|^2 <- |u|^2 |u'|^2 are the same map and the same running derivative (|z'_{n+1}|^2 =
+// 4 s^2 |z_n|^2 |z'_n|^2 = |u_n|^2 |z'_n|^2) without the two multiplications by 2 s, and the
+// radii compare against thresholds scaled by 4 s^2. Only the counters want the iteration count
+// there; they count the running lanes instead of keeping each lane's count.
+template <bool kQuadratic, bool kOrbit, size_t K, class D>
+HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn::Vec<D>> (&z)[K],
+                              const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
+                              LaneCounters& counters) {
+    using V = hn::Vec<D>;
+    using M = hn::Mask<D>;
+    using T = hn::TFromD<D>;
+    const V one = hn::Set(d, T(1)), half = hn::Set(d, T(0.5));
+    // Where the bailout is at least the certified escape radius (the default), every escape is
+    // final and |z| grows from then on: a lane stops at the estimate radius, and the lanes not
+    // escaped after N iterates are inside; the escaped mask is then needed only for the trap.
+    const bool certified = !kOrbit && k.certified;
+    const bool scaled = certified && kQuadratic && sizeof(T) == 4;  // iterate u = 2 s z
+    // K independent groups of lanes, iterated side by side so that their dependency chains
+    // overlap in the pipeline.
+    V r2[K], derivativeSquared[K], stopRadiusSquared[K], stopDerivativeSquared[K], trap[K],
+        stopIteration[K];
+    M escaped[K], done[K], inside[K];
+    bool allDone = true;
+    for (size_t j = 0; j < K; ++j) {
+        r2[j] = normSquaredLanes(z[j]);
+        derivativeSquared[j] = one;
+        escaped[j] = hn::And(live[j], r2[j] > k.bailoutSquared);
+        // Escaped at z_0: final unless escape is certain and the estimate radius not reached.
+        auto continues = hn::And(r2[j] > k.escapeRadiusSquared, r2[j] < k.estimateRadiusSquared);
+        done[j] = hn::Or(hn::Not(live[j]), hn::AndNot(continues, escaped[j]));
+        inside[j] = hn::FirstN(d, 0);
+        if (k.maxIterationCount <= 1) {
+            inside[j] = hn::AndNot(escaped[j], live[j]);
+            done[j] = hn::Or(done[j], inside[j]);
+        }
+        trap[j] = r2[j];
+        stopIteration[j] = hn::Zero(d);
+        allDone = allDone && hn::AllTrue(d, done[j]);
+        if (scaled) {
+            z[j] = {k.twoScale * z[j].w, k.twoScale * z[j].x, k.twoScale * z[j].y,
+                    k.twoScale * z[j].z};
+            r2[j] = normSquaredLanes(z[j]);
+        }
+        stopRadiusSquared[j] = r2[j];
+        stopDerivativeSquared[j] = one;
+    }
+    const int64_t lanes = int64_t(hn::Lanes(d));
+    const int iterationCap = k.maxIterationCount + kMaxContinuation;
+    int64_t running = 0;  // lane iterations of the certified loops, which keep no counts
+    V iteration = hn::Zero(d);
+    int n = 1;
+    if (scaled) {
+        // The hot loop, on its own so that its registers hold nothing else.
+        for (; n < iterationCap && !allDone; ++n) {
+            allDone = true;
+            const bool last = n + 1 >= k.maxIterationCount;  // z_0 .. z_{N-1} tested
+            for (size_t j = 0; j < K; ++j) {
+                derivativeSquared[j] = derivativeSquared[j] * r2[j];
+                z[j] = halfSquareStepLanes(z[j], half, k.scaledC);
+                r2[j] = normSquaredLanes(z[j]);
+                running += lanes - int64_t(hn::CountTrue(d, done[j]));
+                auto stopNow = hn::AndNot(done[j], r2[j] >= k.scaledEstimateRadiusSquared);
+                if (last) {
+                    const auto insideNow = hn::AndNot(done[j], r2[j] <= k.scaledBailoutSquared);
+                    inside[j] = hn::Or(inside[j], insideNow);
+                    stopNow = hn::Or(stopNow, insideNow);
+                }
+                stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
+                stopDerivativeSquared[j] =
+                    hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
+                done[j] = hn::Or(done[j], stopNow);
+                allDone = allDone && hn::AllTrue(d, done[j]);
+            }
+        }
+    }
+    for (; n < iterationCap && !allDone; ++n) {
+        allDone = true;
+        if (!certified) iteration = iteration + one;
+        for (size_t j = 0; j < K; ++j) {
+            if constexpr (kQuadratic) {
+                derivativeSquared[j] = derivativeSquared[j] * (k.gainFactor * r2[j]);
+                z[j] = quadraticStepLanes(z[j], k.scale, k.c);
+            } else {
+                V gain = k.gainFactor;
+                for (int e = 1; e < k.degree; ++e)
+                    gain = gain * r2[j];
+                derivativeSquared[j] = derivativeSquared[j] * gain;
+                z[j] = powerStepLanes(z[j], k.degree, k.scale, k.c);
+            }
+            r2[j] = normSquaredLanes(z[j]);
+            if (certified) {
+                running += lanes - int64_t(hn::CountTrue(d, done[j]));
+                auto stopNow = hn::AndNot(done[j], r2[j] >= k.estimateRadiusSquared);
+                if (n + 1 >= k.maxIterationCount) {
+                    const auto insideNow = hn::AndNot(done[j], r2[j] <= k.bailoutSquared);
+                    inside[j] = hn::Or(inside[j], insideNow);
+                    stopNow = hn::Or(stopNow, insideNow);
+                }
+                stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
+                stopDerivativeSquared[j] =
+                    hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
+                done[j] = hn::Or(done[j], stopNow);
+                allDone = allDone && hn::AllTrue(d, done[j]);
+                continue;
+            }
+            const auto settled = hn::Or(escaped[j], done[j]);  // before this iterate
+            if constexpr (kOrbit)
+                trap[j] = hn::IfThenElse(settled, trap[j], hn::Min(trap[j], r2[j]));
+            const auto escapedNow = hn::AndNot(settled, r2[j] > k.bailoutSquared);
+            escaped[j] = hn::Or(escaped[j], escapedNow);
+            // An escaped lane stops at the estimate radius, or at once if escape is not certain.
+            auto stopNow = hn::AndNot(
+                done[j],
+                hn::And(escaped[j], hn::Or(r2[j] >= k.estimateRadiusSquared,
+                                           hn::AndNot(r2[j] > k.escapeRadiusSquared, escapedNow))));
+            if (n + 1 >= k.maxIterationCount) {  // z_0 .. z_{N-1} tested: the rest are inside
+                const auto insideNow = hn::Not(hn::Or(escaped[j], done[j]));
+                inside[j] = hn::Or(inside[j], insideNow);
+                stopNow = hn::Or(stopNow, insideNow);
+            }
+            stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
+            stopDerivativeSquared[j] =
+                hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
+            stopIteration[j] = hn::IfThenElse(stopNow, iteration, stopIteration[j]);
+            done[j] = hn::Or(done[j], stopNow);
+            allDone = allDone && hn::AllTrue(d, done[j]);
+        }
+    }
+    counters.laneIterations += running;
+    for (size_t j = 0; j < K; ++j) {
+        const auto unfinished = hn::Not(done[j]);  // the continuation cap ended them
+        V radiusSquared = hn::IfThenElse(unfinished, r2[j], stopRadiusSquared[j]);
+        if (scaled) radiusSquared = radiusSquared * k.inverseFourScaleSquared;
+        V derivative = hn::IfThenElse(unfinished, derivativeSquared[j], stopDerivativeSquared[j]);
+        counters.laneSlots += lanes * int64_t(n - 1);
+        if (!certified) {
+            stopIteration[j] = hn::IfThenElse(unfinished, iteration, stopIteration[j]);
+            // Utilisation: each lane did useful work until it stopped; the slots are all lanes.
+            counters.laneIterations += int64_t(
+                hn::GetLane(hn::SumOfLanes(d, hn::IfThenElseZero(live[j], stopIteration[j]))));
+        }
+        result[j].inside = inside[j];
+        result[j].distance = hn::IfThenZeroElse(
+            inside[j], closingDistance(d, radiusSquared, derivative, k.stepScale));
+        result[j].trapSquared = trap[j];
+        result[j].iterations = hn::IfThenElse(inside[j], k.maxIterations, stopIteration[j]);
+        result[j].radiusSquared = radiusSquared;
+    }
+}
+
+// The estimates at the current points of the rays in the lanes (o + t d, through the slice):
+// live lanes, their t, and the estimates. False when no lane holds a ray.
+template <bool kQuadratic, size_t K, class D, class T>
+HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes<T>& s,
+                                  hn::Mask<D> (&live)[K], hn::Vec<D> (&t)[K],
+                                  LaneEstimate<D> (&e)[K], LaneCounters& counters) {
+    const size_t lanes = hn::Lanes(d);
+    QuaternionLanes<hn::Vec<D>> q[K];
+    bool anyLive = false;
+    for (size_t j = 0; j < K; ++j) {
+        const size_t o = j * lanes;
+        live[j] = hn::Load(d, s.live + o) > hn::Zero(d);
+        anyLive = anyLive || !hn::AllFalse(d, live[j]);
+        t[j] = hn::Load(d, s.t + o);
+        q[j] =
+            k.quaternionFromWorld(hn::MulAdd(hn::Load(d, s.dx + o), t[j], hn::Load(d, s.ox + o)),
+                                  hn::MulAdd(hn::Load(d, s.dy + o), t[j], hn::Load(d, s.oy + o)),
+                                  hn::MulAdd(hn::Load(d, s.dz + o), t[j], hn::Load(d, s.oz + o)));
+    }
+    if (!anyLive) return false;
+    estimateLanes<kQuadratic, false>(d, k, q, live, e, counters);
+    for (size_t j = 0; j < K; ++j)
+        counters.estimates += int64_t(hn::CountTrue(d, live[j]));
+    return true;
+}
+
+#endif  // QUATERNIA_ESTIMATE_LANES_INL_H_
