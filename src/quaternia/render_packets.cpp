@@ -47,7 +47,6 @@ double PacketTileRenderer::coneRatio(const Camera& camera) {
 void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixels,
                                 PacketTileStats& stats) {
     const int width = tile.x1 - tile.x0;
-    tileWidth_ = width;
     tileBlocks_ =
         (width + kConeBlock - 1) / kConeBlock * ((tile.y1 - tile.y0 + kConeBlock - 1) / kConeBlock);
     pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{});
@@ -56,11 +55,14 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
     for (int k = 0; k < samples_; ++k) {
         rays_.clear();
         rayPixel_.clear();
+        rayBlock_.clear();
         for (int py = tile.y0; py < tile.y1; ++py) {
             const double* blockRow =
                 blockStart_.data() + size_t((py - tile.y0) / kConeBlock * blocksAcross);
+            const int rowBlock = (py - tile.y0) / kConeBlock * blocksAcross;
             for (int px = tile.x0; px < tile.x1; ++px) {
-                const double start = blockRow[(px - tile.x0) / kConeBlock];
+                const int column = (px - tile.x0) / kConeBlock;
+                const double start = blockRow[column];
                 if (start == std::numeric_limits<double>::infinity()) continue;  // cone missed
                 auto [sx, sy] = samplePosition(k, samples_, px, py);
                 Ray ray = camera_.generateRay(px + sx, py + sy);
@@ -70,6 +72,7 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
                 if (near > interval->tFar) continue;  // the cone found nothing on this ray
                 rays_.push(ray, near, interval->tFar);
                 rayPixel_.push_back((py - tile.y0) * width + (px - tile.x0));
+                rayBlock_.push_back(rowBlock + column);
             }
         }
         traceCameraRays(lanes_, march_, rays_, traced_, stats.camera);
@@ -82,7 +85,7 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
             if (r.end == TraceEnd::Miss) continue;
             Ray ray{Point3d(rays_.ox[i], rays_.oy[i], rays_.oz[i]),
                     Vector3d(rays_.dx[i], rays_.dy[i], rays_.dz[i])};
-            hits_.push_back({rayPixel_[i], r.t, ray.direction, ray.at(r.tOutside)});
+            hits_.push_back({rayPixel_[i], rayBlock_[i], r.t, ray.direction, ray.at(r.tOutside)});
             hitPoints_.push(hits_.back().outside);
         }
         if (hits_.empty()) continue;
@@ -248,13 +251,10 @@ void PacketTileRenderer::clipShadowRays(PacketTileStats& stats) {
     shadowClear_.clear();
     if (count == 0) return;
     // The rays grouped by block, in order within each (a counting sort: hits come in rows).
-    const int blocksAcross = (tileWidth_ + kConeBlock - 1) / kConeBlock;
     blockOfRay_.resize(count);
     blockStarts_.assign(size_t(tileBlocks_) + 1, 0);
     for (size_t r = 0; r < count; ++r) {
-        const int pixel = hits_[size_t(shadowHit_[r])].pixel;
-        const int block =
-            pixel / tileWidth_ / kConeBlock * blocksAcross + pixel % tileWidth_ / kConeBlock;
+        const int block = hits_[size_t(shadowHit_[r])].block;
         blockOfRay_[r] = block;
         ++blockStarts_[size_t(block) + 1];
     }

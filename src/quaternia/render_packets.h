@@ -74,9 +74,10 @@ class PacketTileRenderer {
     // The batches of the current sample of the tile.
     RayBatch rays_;
     std::vector<int> rayPixel_;  // which pixel of the tile each ray belongs to
+    std::vector<int> rayBlock_;  // and which of its cone blocks
     std::vector<TraceResult> traced_;
     struct HitRecord {
-        int pixel;
+        int pixel, block;
         double t;
         Vector3d direction;
         Point3d outside;
@@ -89,7 +90,7 @@ class PacketTileRenderer {
     RayBatch shadowRays_;
     std::vector<int> shadowHit_;
     std::vector<double> shadowVisibility_, marchedVisibility_;
-    int tileWidth_ = 0, tileBlocks_ = 0;
+    int tileBlocks_ = 0;
     std::vector<int> blockOfRay_, blockStarts_, blockFill_;
     std::vector<int> shadowOrder_;  // the shadow rays, block by block
     RayBatch cylinders_;
