@@ -186,6 +186,23 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
     const int64_t lanes = int64_t(hn::Lanes(d));
     const int iterationCap = k.maxIterationCount + kMaxContinuation;
     int64_t running = 0;  // lane iterations of the certified loops, which keep no counts
+    // The certified loops' bookkeeping after group j's iterate: count its running lanes, stop
+    // those past the estimate radius and, after the N-th iterate (`last`), those still inside;
+    // true when every lane of the group is done.
+    auto settleCertified = [&](size_t j, V stopRadius, V insideRadius, bool last) {
+        running += lanes - int64_t(hn::CountTrue(d, done[j]));
+        auto stopNow = hn::AndNot(done[j], r2[j] >= stopRadius);
+        if (last) {
+            const auto insideNow = hn::AndNot(done[j], r2[j] <= insideRadius);
+            inside[j] = hn::Or(inside[j], insideNow);
+            stopNow = hn::Or(stopNow, insideNow);
+        }
+        stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
+        stopDerivativeSquared[j] =
+            hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
+        done[j] = hn::Or(done[j], stopNow);
+        return hn::AllTrue(d, done[j]);
+    };
     V iteration = hn::Zero(d);
     int n = 1;
     if (scaled) {
@@ -197,18 +214,9 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
                 derivativeSquared[j] = derivativeSquared[j] * r2[j];
                 z[j] = halfSquareStepLanes(z[j], half, k.scaledC);
                 r2[j] = normSquaredLanes(z[j]);
-                running += lanes - int64_t(hn::CountTrue(d, done[j]));
-                auto stopNow = hn::AndNot(done[j], r2[j] >= k.scaledEstimateRadiusSquared);
-                if (last) {
-                    const auto insideNow = hn::AndNot(done[j], r2[j] <= k.scaledBailoutSquared);
-                    inside[j] = hn::Or(inside[j], insideNow);
-                    stopNow = hn::Or(stopNow, insideNow);
-                }
-                stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
-                stopDerivativeSquared[j] =
-                    hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
-                done[j] = hn::Or(done[j], stopNow);
-                allDone = allDone && hn::AllTrue(d, done[j]);
+                const bool groupDone =
+                    settleCertified(j, k.scaledEstimateRadiusSquared, k.scaledBailoutSquared, last);
+                allDone = allDone && groupDone;
             }
         }
     }
@@ -228,18 +236,9 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
             }
             r2[j] = normSquaredLanes(z[j]);
             if (certified) {
-                running += lanes - int64_t(hn::CountTrue(d, done[j]));
-                auto stopNow = hn::AndNot(done[j], r2[j] >= k.estimateRadiusSquared);
-                if (n + 1 >= k.maxIterationCount) {
-                    const auto insideNow = hn::AndNot(done[j], r2[j] <= k.bailoutSquared);
-                    inside[j] = hn::Or(inside[j], insideNow);
-                    stopNow = hn::Or(stopNow, insideNow);
-                }
-                stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
-                stopDerivativeSquared[j] =
-                    hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
-                done[j] = hn::Or(done[j], stopNow);
-                allDone = allDone && hn::AllTrue(d, done[j]);
+                const bool groupDone = settleCertified(j, k.estimateRadiusSquared, k.bailoutSquared,
+                                                       n + 1 >= k.maxIterationCount);
+                allDone = allDone && groupDone;
                 continue;
             }
             const auto settled = hn::Or(escaped[j], done[j]);  // before this iterate

@@ -321,43 +321,40 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
         auto z = k.quaternionFromWorld(hn::Load(d, in.a), hn::Load(d, in.b), hn::Load(d, in.c));
         QuaternionLanes<V> t0 = k.axis0, t1 = k.axis1, t2 = k.axis2;
         V n = hn::Zero(d);
+        // One iteration of the point and the tangents; `hold(next, old)` gives each lane's new
+        // value, or keeps the old one in a lane that has done its M iterations.
+        auto iterate = [&](const auto& hold) {
+            QuaternionLanes<V> n0, n1, n2, nz;
+            if constexpr (kQuadratic) {
+                n0 = quadraticDerivativeLanes(z, t0, k.scale);
+                n1 = quadraticDerivativeLanes(z, t1, k.scale);
+                n2 = quadraticDerivativeLanes(z, t2, k.scale);
+                nz = quadraticStepLanes(z, k.scale, k.c);
+            } else {
+                n0 = powerDerivativeLanes(z, t0, k.degree, k.scale);
+                n1 = powerDerivativeLanes(z, t1, k.degree, k.scale);
+                n2 = powerDerivativeLanes(z, t2, k.degree, k.scale);
+                nz = powerStepLanes(z, k.degree, k.scale, k.c);
+            }
+            t0 = hold(n0, t0), t1 = hold(n1, t1), t2 = hold(n2, t2), z = hold(nz, z);
+            n = n + one;
+            rescale(t0, t1, t2);
+        };
         // Lanes have their own M; while every lane still runs (most of the iterations, as the
-        // M of neighbouring hits differ little), the selects that hold finished lanes are skipped.
+        // M of neighbouring hits differ little), nothing needs holding.
         const int fewest = int(hn::GetLane(hn::MinOfLanes(d, m)));
         for (int iteration = 0; iteration < fewest; ++iteration) {
             counters.laneIterations += int64_t(lanes);
             counters.laneSlots += int64_t(lanes);
-            if constexpr (kQuadratic) {
-                t0 = quadraticDerivativeLanes(z, t0, k.scale);
-                t1 = quadraticDerivativeLanes(z, t1, k.scale);
-                t2 = quadraticDerivativeLanes(z, t2, k.scale);
-                z = quadraticStepLanes(z, k.scale, k.c);
-            } else {
-                t0 = powerDerivativeLanes(z, t0, k.degree, k.scale);
-                t1 = powerDerivativeLanes(z, t1, k.degree, k.scale);
-                t2 = powerDerivativeLanes(z, t2, k.degree, k.scale);
-                z = powerStepLanes(z, k.degree, k.scale, k.c);
-            }
-            n = n + one;
-            rescale(t0, t1, t2);
+            iterate([](const QuaternionLanes<V>& next, const QuaternionLanes<V>&) { return next; });
         }
         for (int iteration = fewest; iteration < most; ++iteration) {
-            auto running = n < m;
+            const auto running = n < m;
             counters.laneIterations += int64_t(hn::CountTrue(d, running));
             counters.laneSlots += int64_t(lanes);
-            if constexpr (kQuadratic) {
-                t0 = select(running, quadraticDerivativeLanes(z, t0, k.scale), t0);
-                t1 = select(running, quadraticDerivativeLanes(z, t1, k.scale), t1);
-                t2 = select(running, quadraticDerivativeLanes(z, t2, k.scale), t2);
-                z = select(running, quadraticStepLanes(z, k.scale, k.c), z);
-            } else {
-                t0 = select(running, powerDerivativeLanes(z, t0, k.degree, k.scale), t0);
-                t1 = select(running, powerDerivativeLanes(z, t1, k.degree, k.scale), t1);
-                t2 = select(running, powerDerivativeLanes(z, t2, k.degree, k.scale), t2);
-                z = select(running, powerStepLanes(z, k.degree, k.scale, k.c), z);
-            }
-            n = n + one;
-            rescale(t0, t1, t2);
+            iterate([&](const QuaternionLanes<V>& next, const QuaternionLanes<V>& old) {
+                return select(running, next, old);
+            });
         }
         hn::Store(dotLanes(z, t0), d, out.a);
         hn::Store(dotLanes(z, t1), d, out.b);
