@@ -12,9 +12,13 @@ trap 'rm -rf "$out"' EXIT
 
 scene() {  # name, then quaternia render arguments
   local name=$1; shift
+  # The summaries go to a file and are read after the runs: a reader started beside them (a
+  # pipe into python3) would take the other core while the first render runs.
+  : > "$out/runs.jsonl"
   for _ in $(seq "$runs"); do
-    "$binary" render "$@" --json -o "$out/frame.png"
-  done | python3 -c '
+    "$binary" render "$@" --json -o "$out/frame.png" >> "$out/runs.jsonl"
+  done
+  python3 -c '
 import json, statistics, sys
 runs = [json.loads(line) for line in sys.stdin]
 ms = statistics.median(r["seconds"] for r in runs) * 1000
@@ -25,7 +29,7 @@ print("%-28s %-10s %8.1f ms %6.1f fps %8.2f Mrays/s  %-7s lanes %3.0f%%  steps/r
       % (sys.argv[1], size, ms, 1000 / ms, rate / 1e6, r["engine"], 100 * r["lane_utilisation"],
          r["march_steps"] / r["rays"], r["iterations"] / r["rays"],
          r["shading_estimates"] / max(1, r["hits"]), len(runs), r["threads"]))
-' "$name"
+' "$name" < "$out/runs.jsonl"
 }
 
 # The default benchmark scene: the default scene at 1920x1080, 1 sample, key light with soft
@@ -42,17 +46,21 @@ scene default-720p-4spp
 scene case01-shaded-1080p bench/scenes/case01_sqr_A_shaded.toml
 # Meshes of the default scene: median time and peak memory (GNU time's maximum resident set).
 mesh() {  # resolution
+  : > "$out/meshes.txt"
   for _ in $(seq "$runs"); do
     /usr/bin/time -f '%M' -o "$out/rss" "$binary" mesh --resolution "$1" --json -o "$out/mesh.stl" \
-      | python3 -c 'import json, sys; r = json.load(sys.stdin); print(r["seconds"], r["triangles"], r["threads"], open(sys.argv[1]).read().strip())' "$out/rss"
-  done | python3 -c '
+      > "$out/mesh.json"
+    python3 -c 'import json, sys; r = json.load(sys.stdin); print(r["seconds"], r["triangles"], r["threads"], open(sys.argv[1]).read().strip())' "$out/rss" \
+      < "$out/mesh.json" >> "$out/meshes.txt"
+  done
+  python3 -c '
 import statistics, sys
 runs = [line.split() for line in sys.stdin]
 seconds = statistics.median(float(r[0]) for r in runs)
 rss = max(int(r[3]) for r in runs) / 1024
 print("%-24s %9.2f s %10d triangles %8.0f MB peak  (median of %d, %s threads)"
       % ("mesh-default-" + sys.argv[1], seconds, int(runs[0][1]), rss, len(runs), runs[0][2]))
-' "$1"
+' "$1" < "$out/meshes.txt"
 }
 echo
 echo "mesh                     time      size                 memory"
