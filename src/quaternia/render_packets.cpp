@@ -131,7 +131,9 @@ void PacketTileRenderer::marchCones(const Tile& tile, PacketTileStats& stats) {
     }
     CameraMarch coneMarch = march_;
     coneMarch.cone = true;
-    coneMarch.epsilon = 1.5;  // 2 took 9% more steps of the pixel rays after the cones
+    // Cones stop at 1.2 radii: at 1.5, case01 took 2.7% and the default scene 3.5% more march
+    // steps in all (2 took 9% more steps of the pixel rays than 1.5); below 1.2 little changes.
+    coneMarch.epsilon = 1.2;
     coneMarch.pixelAngle = ratio;
     traceCameraRays(lanes_, coneMarch, cones_, coneResults_, stats.camera);
     for (size_t i = 0; i < coneResults_.size(); ++i) {
@@ -245,7 +247,7 @@ void PacketTileRenderer::clipShadowRays(PacketTileStats& stats) {
     // towards them (step: the estimate less the radius), proves the set absent from the part
     // of every ray beyond where it stopped (as the cones of the camera rays do, marchCones), so
     // each ray is marched only from its origin to there; a cylinder that gets past every
-    // origin clears its rays whole. It stops where the set comes within 1.5 radii: at an
+    // origin clears its rays whole. It stops where the set comes within 1.2 radii: at an
     // occluder, whose rays then meet it on their own, or at the surface the rays start from.
     const size_t count = shadowHit_.size();
     shadowClear_.clear();
@@ -301,7 +303,7 @@ void PacketTileRenderer::clipShadowRays(PacketTileStats& stats) {
     if (cylinders_.size() == 0) return;
     CameraMarch cylinderMarch = march_;
     cylinderMarch.cone = true;
-    cylinderMarch.epsilon = 1.5;
+    cylinderMarch.epsilon = 1.2;
     cylinderMarch.pixelAngle = 0;
     traceCameraRays(lanes_, cylinderMarch, cylinders_, cylinderResults_, stats.shading);
 
