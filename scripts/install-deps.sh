@@ -8,13 +8,9 @@ packages=(
   libpng-dev zlib1g-dev libtomlplusplus-dev libcli11-dev libhwy-dev
   libgtest-dev libbenchmark-dev
   admesh
-  libcpp-httplib-dev chromium
+  libcpp-httplib-dev
+  chromium chromium-driver python3-selenium
 )
-# Node for the browser test (playwright-core). Debian's nodejs and npm only where no node is
-# installed: Debian's npm conflicts with NodeSource's nodejs, which brings its own npm.
-if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
-  packages+=(nodejs npm)
-fi
 
 missing=()
 for package in "${packages[@]}"; do

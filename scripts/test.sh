@@ -8,15 +8,6 @@ cd "$(dirname "$0")/.."
 
 bash scripts/install-deps.sh
 jobs=$(nproc)
-# playwright-core for the browser test, exactly as locked; it never downloads a browser (the
-# test runs Debian's chromium). It is not a Debian package: where npm's registry cannot be
-# reached, the browser test is left out (CMakeLists.txt says so) and every other test runs.
-if [ ! -d tests/browser/node_modules/playwright-core ]; then
-  if ! (cd tests/browser && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --silent --no-audit --no-fund); then
-    echo "scripts/test.sh: could not install playwright-core with npm; the browser test is left out" >&2
-  fi
-fi
-
 echo "== Release build and tests"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DQUATERNIA_BUILD_TESTS=ON \
   -DQUATERNIA_BUILD_BENCH=ON >/dev/null

@@ -1,0 +1,65 @@
+"""Explorer timings in headless chromium: time to first frame at 640x360 (a quarter-resolution
+frame, 160x90 with one sample, arrives first) and frames shown per second while dragging to
+orbit. Medians of several runs.
+Usage: python3 explore_bench.py --binary build/quaternia [--runs 5]"""
+import argparse
+import json
+import statistics
+
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
+
+from harness import Browser, Server, wait_for_final, wait_until
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--binary", default="build/quaternia")
+    parser.add_argument("--runs", type=int, default=5)
+    arguments = parser.parse_args()
+    server = Server(arguments.binary)
+    browser = Browser(980, 400)
+    driver = browser.driver
+    try:
+        first_frame, first_frame_script, first_render, fps = [], [], [], []
+        for _ in range(arguments.runs):
+            driver.get(server.url + "?size=640x360")
+            wait_until(driver, "return window.exploreTiming && "
+                               "window.exploreTiming.firstFrameMs !== null;")
+            timing = driver.execute_script("return window.exploreTiming;")
+            first_frame.append(timing["firstFrameSinceNavigationMs"])
+            first_frame_script.append(timing["firstFrameMs"])
+            first_render.append(timing["firstRenderMs"])
+            wait_for_final(driver)
+
+            # Drag across the view for 3 s, a mouse event every 16 ms (60 Hz), as one action
+            # sequence so that the driver's round trips do not set the pace.
+            view = driver.find_element(By.ID, "viewport")
+            width = view.rect["width"]
+            before = driver.execute_script("return window.exploreTiming.frames.length;")
+            actions = ActionChains(driver, duration=0)
+            actions.move_to_element_with_offset(view, int(100 - width / 2), 0).click_and_hold()
+            x = 100
+            for _ in range(int(3.0 / 0.016)):
+                x = 100 + ((x - 100 + 3) % 400)
+                actions.move_to_element_with_offset(view, int(x - width / 2), 0).pause(0.016)
+            start = driver.execute_script("return performance.now();")
+            actions.perform()
+            seconds = (driver.execute_script("return performance.now();") - start) / 1000
+            after = driver.execute_script("return window.exploreTiming.frames.length;")
+            ActionChains(driver).release().perform()
+            fps.append((after - before) / seconds)
+        print(json.dumps({
+            "size": "640x360", "runs": arguments.runs,
+            "first_frame_ms_since_navigation": statistics.median(first_frame),
+            "first_frame_ms_since_script": statistics.median(first_frame_script),
+            "first_frame_server_render_ms": statistics.median(first_render),
+            "drag_frames_per_second": statistics.median(fps),
+        }))
+    finally:
+        browser.close()
+        server.stop()
+
+
+if __name__ == "__main__":
+    main()
