@@ -32,6 +32,17 @@ void RayBatch::clear() {
         v->clear();
 }
 
+void RayBatch::removeFlagged(const std::vector<uint8_t>& drop) {
+    for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tNear, &tFar, &spread}) {
+        if (v->empty()) continue;  // spread is optional
+        size_t kept = 0;
+        for (size_t r = 0; r < v->size(); ++r) {
+            if (!drop[r]) (*v)[kept++] = (*v)[r];
+        }
+        v->resize(kept);
+    }
+}
+
 void PointBatch::clear() {
     x.clear(), y.clear(), z.clear();
 }

@@ -56,6 +56,8 @@ struct RayBatch {
     // pixelAngle * t adds (a cylinder where pixelAngle is 0). Empty means 0 for every ray.
     std::vector<double> spread;
     void clear();
+    // Keeps the rays whose flag in `drop` is 0, in their order (`drop` has one per ray).
+    void removeFlagged(const std::vector<uint8_t>& drop);
     void push(const Ray& ray, double near, double far) {
         ox.push_back(ray.origin.x), oy.push_back(ray.origin.y), oz.push_back(ray.origin.z);
         dx.push_back(ray.direction.x), dy.push_back(ray.direction.y), dz.push_back(ray.direction.z);

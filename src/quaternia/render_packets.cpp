@@ -253,19 +253,16 @@ void PacketTileRenderer::clipShadowRays(PacketTileStats& stats) {
     shadowClear_.clear();
     if (count == 0) return;
     // The rays grouped by block, in order within each (a counting sort: hits come in rows).
-    blockOfRay_.resize(count);
+    auto blockOf = [&](size_t r) { return size_t(hits_[size_t(shadowHit_[r])].block); };
     blockStarts_.assign(size_t(tileBlocks_) + 1, 0);
-    for (size_t r = 0; r < count; ++r) {
-        const int block = hits_[size_t(shadowHit_[r])].block;
-        blockOfRay_[r] = block;
-        ++blockStarts_[size_t(block) + 1];
-    }
+    for (size_t r = 0; r < count; ++r)
+        ++blockStarts_[blockOf(r) + 1];
     for (size_t b = 0; b < size_t(tileBlocks_); ++b)
         blockStarts_[b + 1] += blockStarts_[b];
     shadowOrder_.resize(count);
     blockFill_.assign(blockStarts_.begin(), blockStarts_.end() - 1);
     for (size_t r = 0; r < count; ++r)
-        shadowOrder_[size_t(blockFill_[size_t(blockOfRay_[r])]++)] = int(r);
+        shadowOrder_[size_t(blockFill_[blockOf(r)]++)] = int(r);
 
     const Vector3d light = shader_.lightDirection();
     auto origin = [&](size_t r) {
@@ -325,17 +322,7 @@ void PacketTileRenderer::clipShadowRays(PacketTileStats& stats) {
         }
     }
     // The batch to march: the rays not cleared whole, in their order.
-    size_t kept = 0;
-    for (size_t r = 0; r < count; ++r) {
-        if (shadowClear_[r]) continue;
-        for (auto* v : {&shadowRays_.ox, &shadowRays_.oy, &shadowRays_.oz, &shadowRays_.dx,
-                        &shadowRays_.dy, &shadowRays_.dz, &shadowRays_.tNear, &shadowRays_.tFar})
-            (*v)[kept] = (*v)[r];
-        ++kept;
-    }
-    for (auto* v : {&shadowRays_.ox, &shadowRays_.oy, &shadowRays_.oz, &shadowRays_.dx,
-                    &shadowRays_.dy, &shadowRays_.dz, &shadowRays_.tNear, &shadowRays_.tFar})
-        v->resize(kept);
+    shadowRays_.removeFlagged(shadowClear_);
 }
 
 }  // namespace quaternia

@@ -91,7 +91,7 @@ class PacketTileRenderer {
     std::vector<int> shadowHit_;
     std::vector<double> shadowVisibility_, marchedVisibility_;
     int tileBlocks_ = 0;
-    std::vector<int> blockOfRay_, blockStarts_, blockFill_;
+    std::vector<int> blockStarts_, blockFill_;
     std::vector<int> shadowOrder_;  // the shadow rays, block by block
     RayBatch cylinders_;
     std::vector<std::pair<size_t, size_t>> cylinderRays_;
