@@ -51,16 +51,6 @@ inline QuaternionLanes<V> quadraticStepLanes(const QuaternionLanes<V>& z, V scal
             twoScaleW * z.x + c.x, twoScaleW * z.y + c.y, twoScaleW * z.z + c.z};
 }
 
-// The same map in u = 2 s z, where it reads u <- u^2 / 2 + 2 s c (`scaledC` = 2 s c): with
-// u^2 / 2 = (w^2 - |v|^2) / 2 + w v it needs no multiplication by the scale (packet_kernels.cpp,
-// estimateLanes). `half` is 1/2 as a lane value.
-template <class V>
-inline QuaternionLanes<V> halfSquareStepLanes(const QuaternionLanes<V>& u, V half,
-                                              const QuaternionLanes<V>& scaledC) {
-    return {half * ((u.w * u.w - u.x * u.x) - (u.y * u.y + u.z * u.z)) + scaledC.w,
-            u.w * u.x + scaledC.x, u.w * u.y + scaledC.y, u.w * u.z + scaledC.z};
-}
-
 // s z^d + c for d >= 1, by d - 1 Hamilton products.
 template <class V>
 inline QuaternionLanes<V> powerStepLanes(const QuaternionLanes<V>& z, int degree, V scale,

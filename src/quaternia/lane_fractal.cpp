@@ -27,6 +27,28 @@ std::optional<LaneFractal> LaneFractal::from(const Fractal& fractal, Precision p
     return lanes;
 }
 
+LaneFractal LaneFractal::withComplexConstant() const {
+    const Vector3d imaginary(c[1], c[2], c[3]);
+    const double length = std::sqrt(dot(imaginary, imaginary));
+    if (!(length > 0)) return *this;  // c is real already
+    // An orthonormal, right-handed frame whose first axis is Im c: phi maps v to its
+    // coordinates in it.
+    const Vector3d first = imaginary / length;
+    const Vector3d helper = std::abs(first.x) < 0.6 ? Vector3d(1, 0, 0) : Vector3d(0, 1, 0);
+    const Vector3d second = normalize(cross(first, helper));
+    const Vector3d third = cross(first, second);
+    auto rotate = [&](const std::array<double, 4>& q) {
+        const Vector3d v(q[1], q[2], q[3]);
+        return std::array<double, 4>{q[0], dot(v, first), dot(v, second), dot(v, third)};
+    };
+    LaneFractal rotated = *this;
+    rotated.origin = rotate(origin);
+    for (auto& axis : rotated.axes)
+        axis = rotate(axis);
+    rotated.c = {c[0], length, 0, 0};
+    return rotated;
+}
+
 void RayBatch::clear() {
     for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tNear, &tFar, &spread})
         v->clear();

@@ -33,6 +33,15 @@ struct LaneFractal {
 
     // nullopt when the polynomial is not s z^d + c.
     static std::optional<LaneFractal> from(const Fractal& fractal, Precision precision);
+
+    // The same object seen through the rotation phi of the imaginary 3-space that takes Im c
+    // onto the i axis: c becomes the complex Re c + |Im c| i and the slice map is followed by
+    // phi. phi(q) = u q conj(u) is an algebra automorphism that keeps |q| and inner products
+    // (ORACLES.md, Symmetries), so phi(s z^d + c) = s phi(z)^d + phi(c): every orbit is the
+    // rotated orbit, with the same radii, escape counts, estimates and gradient products. With
+    // a complex c the j and k components of z^2 + c only scale (the quadratic float loop of
+    // estimate_lanes-inl.h iterates three numbers instead of four).
+    LaneFractal withComplexConstant() const;
 };
 
 // Work done by the lanes, to explain speed: polynomial evaluations that did useful work, and the
