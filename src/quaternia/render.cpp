@@ -144,6 +144,17 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             Rgba{float(display.x), float(display.y), float(display.z), linear.a};
     };
 
+    // A background of one colour (its top and bottom alike), and that colour display-encoded
+    // as the rows' encoding would.
+    const bool uniformBackground = scene.shading.backgroundTop == scene.shading.backgroundBottom;
+    // (In float, as backgroundRow gives it to finishPixel.)
+    const Color backgroundColor(float(scene.shading.backgroundBottom.x),
+                                float(scene.shading.backgroundBottom.y),
+                                float(scene.shading.backgroundBottom.z));
+    Rgba backgroundDisplay{float(backgroundColor.x), float(backgroundColor.y),
+                           float(backgroundColor.z), opaque ? 1.0f : 0.0f};
+    shader.toDisplay(&backgroundDisplay, 1);
+
     auto renderTilePackets = [&](const Tile& tile, ThreadTotals& thread) {
         if (!thread.packets) {
             thread.packets = std::make_unique<PacketTileRenderer>(*lanes, camera, shader,
@@ -157,10 +168,33 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         stats.shadingEstimates += tileStats.shading.estimates;
         stats.laneIterations += tileStats.camera.laneIterations + tileStats.shading.laneIterations;
         stats.laneSlots += tileStats.camera.laneSlots + tileStats.shading.laneSlots;
-        // Each row of the tile: the background first (float, vectorised), which is what a pixel
-        // without hits shows, then the pixels with hits, then display encoding (SIMD) in place.
         const int width = tile.x1 - tile.x0;
         const PixelSamples* pixel = thread.pixels.data();
+        if (uniformBackground) {
+            // One colour, encoded once: the pixels without hits take it as they are, and only
+            // the runs of pixels with hits are finished and encoded.
+            for (int py = tile.y0; py < tile.y1; ++py) {
+                Rgba* row = &result.image.at(tile.x0, py);
+                for (int i = 0; i < width;) {
+                    if (pixel[i].hits == 0) {
+                        if (options.depth) finishPixel(tile.x0 + i, py, pixel[i], backgroundColor);
+                        row[i++] = backgroundDisplay;
+                        continue;
+                    }
+                    const int first = i;
+                    for (; i < width && pixel[i].hits > 0; ++i) {
+                        stats.hits += pixel[i].hits;
+                        row[i] = finishPixel(tile.x0 + i, py, pixel[i], backgroundColor);
+                    }
+                    shader.toDisplay(row + first, size_t(i - first));
+                }
+                pixel += width;
+            }
+            stats.rays += int64_t(samples) * int64_t(thread.pixels.size());
+            return;
+        }
+        // Each row of the tile: the background first (float, vectorised), which is what a pixel
+        // without hits shows, then the pixels with hits, then display encoding (SIMD) in place.
         for (int py = tile.y0; py < tile.y1; ++py) {
             Rgba* row = &result.image.at(tile.x0, py);
             const Camera::RowDirections directions = camera.rowDirections(py);
