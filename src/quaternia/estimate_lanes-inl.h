@@ -21,12 +21,15 @@ struct LaneConstants {
     QuaternionLanes<V> origin, axis0, axis1, axis2, c;
     V scale, bailoutSquared, escapeRadiusSquared, estimateRadiusSquared, stepScale, maxIterations;
     V gainFactor;  // 4 s^2 for d = 2, s^2 d^2 otherwise
-    // The float loop of s z^2 + c in u = 2 s z (estimateLanes): 2 s, 2 s c (complex there:
-    // scaledC + scaledCi i), the bailout and estimate radii squared times 4 s^2, and 1 / (4 s^2).
-    V twoScale, scaledC, scaledCi, scaledBailoutSquared, scaledEstimateRadiusSquared,
-        inverseFourScaleSquared;
+    // The float loop of s z^2 + c in u = 2 s z (estimateThreeNumbers): the slice map times 2 s,
+    // 2 s c (complex there: scaledC + scaledCi i), the radii squared times 4 s^2, and 1 / (4 s^2).
+    QuaternionLanes<V> loopOrigin, loopAxis0, loopAxis1, loopAxis2;
+    V scaledC, scaledCi, scaledBailoutSquared, scaledEscapeRadiusSquared,
+        scaledEstimateRadiusSquared, inverseFourScaleSquared;
     int degree, maxIterationCount;
     bool certified;  // bailout >= the certified escape radius: every escape is final
+    // Distances alone take estimateThreeNumbers: float lanes, z^2 + c, a certified bailout.
+    bool threeNumbers;
 
     // Float lanes take the fractal through LaneFractal::withComplexConstant, which changes no
     // estimate, membership or gradient product: their quadratic loop then needs c = c.w + c.x i.
@@ -37,9 +40,10 @@ struct LaneConstants {
         degree = f.degree;
         maxIterationCount = f.maxIterations;
         certified = f.bailoutSquared >= f.escapeRadiusSquared;
-        auto lanes = [&](const std::array<double, 4>& q) {
-            return QuaternionLanes<V>{hn::Set(d, T(q[0])), hn::Set(d, T(q[1])), hn::Set(d, T(q[2])),
-                                      hn::Set(d, T(q[3]))};
+        threeNumbers = sizeof(T) == 4 && f.degree == 2 && certified;
+        auto lanes = [&](const std::array<double, 4>& q, double factor = 1) {
+            return QuaternionLanes<V>{hn::Set(d, T(factor * q[0])), hn::Set(d, T(factor * q[1])),
+                                      hn::Set(d, T(factor * q[2])), hn::Set(d, T(factor * q[3]))};
         };
         origin = lanes(f.origin);
         axis0 = lanes(f.axes[0]);
@@ -54,10 +58,14 @@ struct LaneConstants {
         maxIterations = hn::Set(d, T(f.maxIterations));
         gainFactor = hn::Set(d, T(f.scale * f.scale * f.degree * f.degree));
         const double fourScaleSquared = 4 * f.scale * f.scale;
-        twoScale = hn::Set(d, T(2 * f.scale));
+        loopOrigin = lanes(f.origin, 2 * f.scale);
+        loopAxis0 = lanes(f.axes[0], 2 * f.scale);
+        loopAxis1 = lanes(f.axes[1], 2 * f.scale);
+        loopAxis2 = lanes(f.axes[2], 2 * f.scale);
         scaledC = hn::Set(d, T(2 * f.scale * f.c[0]));
         scaledCi = hn::Set(d, T(2 * f.scale * f.c[1]));
         scaledBailoutSquared = hn::Set(d, T(fourScaleSquared * f.bailoutSquared));
+        scaledEscapeRadiusSquared = hn::Set(d, T(fourScaleSquared * f.escapeRadiusSquared));
         scaledEstimateRadiusSquared =
             hn::Set(d, T(fourScaleSquared * continuationRadiusSquared<T>(f.degree)));
         inverseFourScaleSquared = hn::Set(d, T(1 / fourScaleSquared));
@@ -65,10 +73,21 @@ struct LaneConstants {
 
     // The slice: a 3D point to its quaternion.
     QuaternionLanes<V> quaternionFromWorld(V x, V y, V z) const {
-        return {hn::MulAdd(z, axis2.w, hn::MulAdd(y, axis1.w, hn::MulAdd(x, axis0.w, origin.w))),
-                hn::MulAdd(z, axis2.x, hn::MulAdd(y, axis1.x, hn::MulAdd(x, axis0.x, origin.x))),
-                hn::MulAdd(z, axis2.y, hn::MulAdd(y, axis1.y, hn::MulAdd(x, axis0.y, origin.y))),
-                hn::MulAdd(z, axis2.z, hn::MulAdd(y, axis1.z, hn::MulAdd(x, axis0.z, origin.z)))};
+        return affine(origin, axis0, axis1, axis2, x, y, z);
+    }
+    // The same point as estimateThreeNumbers takes it: u = 2 s z.
+    QuaternionLanes<V> loopFromWorld(V x, V y, V z) const {
+        return affine(loopOrigin, loopAxis0, loopAxis1, loopAxis2, x, y, z);
+    }
+
+  private:
+    static QuaternionLanes<V> affine(const QuaternionLanes<V>& o, const QuaternionLanes<V>& a0,
+                                     const QuaternionLanes<V>& a1, const QuaternionLanes<V>& a2,
+                                     V x, V y, V z) {
+        return {hn::MulAdd(z, a2.w, hn::MulAdd(y, a1.w, hn::MulAdd(x, a0.w, o.w))),
+                hn::MulAdd(z, a2.x, hn::MulAdd(y, a1.x, hn::MulAdd(x, a0.x, o.x))),
+                hn::MulAdd(z, a2.y, hn::MulAdd(y, a1.y, hn::MulAdd(x, a0.y, o.y))),
+                hn::MulAdd(z, a2.z, hn::MulAdd(y, a1.z, hn::MulAdd(x, a0.z, o.z)))};
     }
 };
 
@@ -132,20 +151,34 @@ HWY_INLINE V closingDistance(D d, V radiusSquared, V derivativeSquared, V stepSc
     return hn::Max(hn::Zero(d), distance) * stepScale;
 }
 
+// The certified loops' bookkeeping after an iterate of one group of lanes, whose |z|^2 is r2
+// and |z'|^2 derivativeSquared: count its running lanes, stop those past stopRadius and, after
+// the N-th iterate (`last`), those still within insideRadius (inside K_N), keeping |z|^2 and
+// |z'|^2 where they stop. True when every lane of the group is done.
+template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
+HWY_INLINE bool settleCertified(D d, V r2, V derivativeSquared, V stopRadius, V insideRadius,
+                                bool last, M& done, M& inside, V& stopRadiusSquared,
+                                V& stopDerivativeSquared, int64_t& running) {
+    running += int64_t(hn::Lanes(d)) - int64_t(hn::CountTrue(d, done));
+    auto stopNow = hn::AndNot(done, r2 >= stopRadius);
+    if (last) {
+        const auto insideNow = hn::AndNot(done, r2 <= insideRadius);
+        inside = hn::Or(inside, insideNow);
+        stopNow = hn::Or(stopNow, insideNow);
+    }
+    stopRadiusSquared = hn::IfThenElse(stopNow, r2, stopRadiusSquared);
+    stopDerivativeSquared = hn::IfThenElse(stopNow, derivativeSquared, stopDerivativeSquared);
+    done = hn::Or(done, stopNow);
+    return hn::AllTrue(d, done);
+}
+
 // JuliaSet::estimate (distance.cpp) in lanes: iterate while |z| <= bailout and fewer than N
 // iterates were tested, then, where escape is certain, continue to the estimate radius. Every
 // lane runs the same iterations (no per-lane selects on z, which would lengthen the dependency
 // chain); a lane whose estimate is final is marked done and its |z|^2 and |z'|^2 are kept at
 // that iteration, while its z runs on unused (it may overflow; nothing reads it). The loop ends
-// when every lane is done. kOrbit also keeps the orbit trap and the iteration count.
-//
-// The marching kernels' case, a certified bailout without the orbit, is the hot loop of the
-// renderer. There, float lanes of s z^2 + c iterate u = 2 s z instead of z: u <- u^2 / 2 + 2 s c
-// and |u'|^2 <- |u|^2 |u'|^2 are the same map and the same running derivative (|z'_{n+1}|^2 =
-// 4 s^2 |z_n|^2 |z'_n|^2 = |u_n|^2 |z'_n|^2) without the two multiplications by 2 s, and the
-// radii compare against thresholds scaled by 4 s^2; with c complex (LaneConstants) u is carried
-// as three numbers, not four. Only the counters want the iteration count there; they count the
-// running lanes instead of keeping each lane's count.
+// when every lane is done. kOrbit also keeps the orbit trap and the iteration count. (The
+// marching kernels' hot case has its own loop: estimateThreeNumbers.)
 template <bool kQuadratic, bool kOrbit, size_t K, class D>
 HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn::Vec<D>> (&z)[K],
                               const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
@@ -153,12 +186,11 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
     using V = hn::Vec<D>;
     using M = hn::Mask<D>;
     using T = hn::TFromD<D>;
-    const V one = hn::Set(d, T(1)), half = hn::Set(d, T(0.5));
+    const V one = hn::Set(d, T(1));
     // Where the bailout is at least the certified escape radius (the default), every escape is
     // final and |z| grows from then on: a lane stops at the estimate radius, and the lanes not
     // escaped after N iterates are inside; the escaped mask is then needed only for the trap.
     const bool certified = !kOrbit && k.certified;
-    const bool scaled = certified && kQuadratic && sizeof(T) == 4;  // iterate u = 2 s z
     // K independent groups of lanes, iterated side by side so that their dependency chains
     // overlap in the pipeline.
     V r2[K], derivativeSquared[K], stopRadiusSquared[K], stopDerivativeSquared[K], trap[K],
@@ -180,68 +212,14 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
         trap[j] = r2[j];
         stopIteration[j] = hn::Zero(d);
         allDone = allDone && hn::AllTrue(d, done[j]);
-        if (scaled) {
-            z[j] = {k.twoScale * z[j].w, k.twoScale * z[j].x, k.twoScale * z[j].y,
-                    k.twoScale * z[j].z};
-            r2[j] = normSquaredLanes(z[j]);
-        }
         stopRadiusSquared[j] = r2[j];
         stopDerivativeSquared[j] = one;
     }
     const int64_t lanes = int64_t(hn::Lanes(d));
     const int iterationCap = k.maxIterationCount + kMaxContinuation;
-    int64_t running = 0;  // lane iterations of the certified loops, which keep no counts
-    // The certified loops' bookkeeping after group j's iterate: count its running lanes, stop
-    // those past the estimate radius and, after the N-th iterate (`last`), those still inside;
-    // true when every lane of the group is done.
-    auto settleCertified = [&](size_t j, V stopRadius, V insideRadius, bool last) {
-        running += lanes - int64_t(hn::CountTrue(d, done[j]));
-        auto stopNow = hn::AndNot(done[j], r2[j] >= stopRadius);
-        if (last) {
-            const auto insideNow = hn::AndNot(done[j], r2[j] <= insideRadius);
-            inside[j] = hn::Or(inside[j], insideNow);
-            stopNow = hn::Or(stopNow, insideNow);
-        }
-        stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
-        stopDerivativeSquared[j] =
-            hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
-        done[j] = hn::Or(done[j], stopNow);
-        return hn::AllTrue(d, done[j]);
-    };
+    int64_t running = 0;  // lane iterations of the certified loop, which keeps no counts
     V iteration = hn::Zero(d);
     int n = 1;
-    if (scaled) {
-        // The hot loop, on its own so that its registers hold nothing else. Float lanes see c as
-        // complex (LaneConstants), so u = a + b i + e, e in span{j, k}, maps to u^2 / 2 + 2 s c
-        // = ((a^2 - b^2 - |e|^2) / 2 + 2 s c.w) + (a b + 2 s c.x) i + a e: e only scales, and
-        // a, b and rho = |e|^2 (rho <- a^2 rho) carry the orbit, 8 operations per iterate with
-        // the derivative instead of 13.
-        V a[K], b[K], rho[K], aa[K], rest[K];  // rest = b^2 + rho, |u|^2 = aa + rest
-        for (size_t j = 0; j < K; ++j) {
-            a[j] = z[j].w, b[j] = z[j].x;
-            rho[j] = hn::MulAdd(z[j].z, z[j].z, z[j].y * z[j].y);
-            aa[j] = a[j] * a[j];
-            rest[j] = hn::MulAdd(b[j], b[j], rho[j]);
-            r2[j] = aa[j] + rest[j];
-        }
-        for (; n < iterationCap && !allDone; ++n) {
-            allDone = true;
-            const bool last = n + 1 >= k.maxIterationCount;  // z_0 .. z_{N-1} tested
-            for (size_t j = 0; j < K; ++j) {
-                derivativeSquared[j] = derivativeSquared[j] * r2[j];
-                const V nextA = hn::MulAdd(half, aa[j] - rest[j], k.scaledC);
-                b[j] = hn::MulAdd(a[j], b[j], k.scaledCi);
-                rho[j] = aa[j] * rho[j];
-                a[j] = nextA;
-                aa[j] = a[j] * a[j];
-                rest[j] = hn::MulAdd(b[j], b[j], rho[j]);
-                r2[j] = aa[j] + rest[j];
-                const bool groupDone =
-                    settleCertified(j, k.scaledEstimateRadiusSquared, k.scaledBailoutSquared, last);
-                allDone = allDone && groupDone;
-            }
-        }
-    }
     for (; n < iterationCap && !allDone; ++n) {
         allDone = true;
         if (!certified) iteration = iteration + one;
@@ -258,8 +236,10 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
             }
             r2[j] = normSquaredLanes(z[j]);
             if (certified) {
-                const bool groupDone = settleCertified(j, k.estimateRadiusSquared, k.bailoutSquared,
-                                                       n + 1 >= k.maxIterationCount);
+                const bool groupDone = settleCertified(
+                    d, r2[j], derivativeSquared[j], k.estimateRadiusSquared, k.bailoutSquared,
+                    n + 1 >= k.maxIterationCount, done[j], inside[j], stopRadiusSquared[j],
+                    stopDerivativeSquared[j], running);
                 allDone = allDone && groupDone;
                 continue;
             }
@@ -289,8 +269,7 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
     counters.laneIterations += running;
     for (size_t j = 0; j < K; ++j) {
         const auto unfinished = hn::Not(done[j]);  // the continuation cap ended them
-        V radiusSquared = hn::IfThenElse(unfinished, r2[j], stopRadiusSquared[j]);
-        if (scaled) radiusSquared = radiusSquared * k.inverseFourScaleSquared;
+        const V radiusSquared = hn::IfThenElse(unfinished, r2[j], stopRadiusSquared[j]);
         V derivative = hn::IfThenElse(unfinished, derivativeSquared[j], stopDerivativeSquared[j]);
         counters.laneSlots += lanes * int64_t(n - 1);
         if (!certified) {
@@ -304,6 +283,86 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
             inside[j], closingDistance(d, radiusSquared, derivative, k.stepScale));
         result[j].trapSquared = trap[j];
         result[j].iterations = hn::IfThenElse(inside[j], k.maxIterations, stopIteration[j]);
+        result[j].radiusSquared = radiusSquared;
+    }
+}
+
+// estimateLanes' certified case for float lanes of s z^2 + c and distances alone: the hot loop
+// of the renderer (LaneConstants::threeNumbers). The points come as u = 2 s z
+// (LaneConstants::loopFromWorld), for which the map reads u <- u^2 / 2 + 2 s c and the running
+// derivative |u'|^2 <- |u|^2 |u'|^2 (|z'_{n+1}|^2 = 4 s^2 |z_n|^2 |z'_n|^2 = |u_n|^2 |z'_n|^2):
+// no multiplication by 2 s, and radii compared against thresholds times 4 s^2. Float lanes see c
+// as complex (LaneConstants), so u = a + b i + e, e in span{j, k}, maps to ((a^2 - b^2 - |e|^2)
+// / 2 + 2 s c.w) + (a b + 2 s c.x) i + a e: e only scales, and a, b and rho = |e|^2 (rho <- a^2
+// rho) carry the orbit, 8 operations per iterate with the derivative instead of 13. Only the
+// counters want the iteration count; they count the running lanes instead of keeping each
+// lane's count. Fills distance, inside and radiusSquared.
+template <size_t K, class D>
+HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
+                                     const QuaternionLanes<hn::Vec<D>> (&u)[K],
+                                     const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
+                                     LaneCounters& counters) {
+    using V = hn::Vec<D>;
+    using M = hn::Mask<D>;
+    using T = hn::TFromD<D>;
+    const V one = hn::Set(d, T(1)), half = hn::Set(d, T(0.5));
+    V a[K], b[K], rho[K], aa[K], rest[K];  // rest = b^2 + rho, |u|^2 = aa + rest
+    V r2[K], derivativeSquared[K], stopRadiusSquared[K], stopDerivativeSquared[K];
+    M done[K], inside[K];
+    bool allDone = true;
+    for (size_t j = 0; j < K; ++j) {
+        a[j] = u[j].w, b[j] = u[j].x;
+        rho[j] = hn::MulAdd(u[j].z, u[j].z, u[j].y * u[j].y);
+        aa[j] = a[j] * a[j];
+        rest[j] = hn::MulAdd(b[j], b[j], rho[j]);
+        r2[j] = aa[j] + rest[j];
+        derivativeSquared[j] = one;
+        // Escaped at z_0: final unless the estimate radius is still ahead.
+        const auto escaped = hn::And(live[j], r2[j] > k.scaledBailoutSquared);
+        const auto continues =
+            hn::And(r2[j] > k.scaledEscapeRadiusSquared, r2[j] < k.scaledEstimateRadiusSquared);
+        done[j] = hn::Or(hn::Not(live[j]), hn::AndNot(continues, escaped));
+        inside[j] = hn::FirstN(d, 0);
+        if (k.maxIterationCount <= 1) {
+            inside[j] = hn::AndNot(escaped, live[j]);
+            done[j] = hn::Or(done[j], inside[j]);
+        }
+        allDone = allDone && hn::AllTrue(d, done[j]);
+        stopRadiusSquared[j] = r2[j];
+        stopDerivativeSquared[j] = one;
+    }
+    const int iterationCap = k.maxIterationCount + kMaxContinuation;
+    int64_t running = 0;
+    int n = 1;
+    for (; n < iterationCap && !allDone; ++n) {
+        allDone = true;
+        const bool last = n + 1 >= k.maxIterationCount;  // z_0 .. z_{N-1} tested
+        for (size_t j = 0; j < K; ++j) {
+            derivativeSquared[j] = derivativeSquared[j] * r2[j];
+            const V nextA = hn::MulAdd(half, aa[j] - rest[j], k.scaledC);
+            b[j] = hn::MulAdd(a[j], b[j], k.scaledCi);
+            rho[j] = aa[j] * rho[j];
+            a[j] = nextA;
+            aa[j] = a[j] * a[j];
+            rest[j] = hn::MulAdd(b[j], b[j], rho[j]);
+            r2[j] = aa[j] + rest[j];
+            const bool groupDone =
+                settleCertified(d, r2[j], derivativeSquared[j], k.scaledEstimateRadiusSquared,
+                                k.scaledBailoutSquared, last, done[j], inside[j],
+                                stopRadiusSquared[j], stopDerivativeSquared[j], running);
+            allDone = allDone && groupDone;
+        }
+    }
+    counters.laneIterations += running;
+    for (size_t j = 0; j < K; ++j) {
+        const auto unfinished = hn::Not(done[j]);  // the continuation cap ended them
+        const V radiusSquared =
+            hn::IfThenElse(unfinished, r2[j], stopRadiusSquared[j]) * k.inverseFourScaleSquared;
+        V derivative = hn::IfThenElse(unfinished, derivativeSquared[j], stopDerivativeSquared[j]);
+        counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
+        result[j].inside = inside[j];
+        result[j].distance = hn::IfThenZeroElse(
+            inside[j], closingDistance(d, radiusSquared, derivative, k.stepScale));
         result[j].radiusSquared = radiusSquared;
     }
 }
@@ -322,13 +381,18 @@ HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes
         live[j] = hn::Load(d, s.live + o) > hn::Zero(d);
         anyLive = anyLive || !hn::AllFalse(d, live[j]);
         t[j] = hn::Load(d, s.t + o);
-        q[j] =
-            k.quaternionFromWorld(hn::MulAdd(hn::Load(d, s.dx + o), t[j], hn::Load(d, s.ox + o)),
-                                  hn::MulAdd(hn::Load(d, s.dy + o), t[j], hn::Load(d, s.oy + o)),
-                                  hn::MulAdd(hn::Load(d, s.dz + o), t[j], hn::Load(d, s.oz + o)));
+        const auto x = hn::MulAdd(hn::Load(d, s.dx + o), t[j], hn::Load(d, s.ox + o));
+        const auto y = hn::MulAdd(hn::Load(d, s.dy + o), t[j], hn::Load(d, s.oy + o));
+        const auto z = hn::MulAdd(hn::Load(d, s.dz + o), t[j], hn::Load(d, s.oz + o));
+        q[j] = kQuadratic && k.threeNumbers ? k.loopFromWorld(x, y, z)
+                                            : k.quaternionFromWorld(x, y, z);
     }
     if (!anyLive) return false;
-    estimateLanes<kQuadratic, false>(d, k, q, live, e, counters);
+    if (kQuadratic && k.threeNumbers) {
+        estimateThreeNumbers(d, k, q, live, e, counters);
+    } else {
+        estimateLanes<kQuadratic, false>(d, k, q, live, e, counters);
+    }
     for (size_t j = 0; j < K; ++j)
         counters.estimates += int64_t(hn::CountTrue(d, live[j]));
     return true;

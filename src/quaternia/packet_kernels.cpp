@@ -246,10 +246,15 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
         size_t count = std::min(lanes, points.size() - begin);
         in.gather(points, begin, count);
         const hn::Mask<D> live[1] = {hn::FirstN(d, count)};
-        QuaternionLanes<hn::Vec<D>> q[1] = {
-            k.quaternionFromWorld(hn::Load(d, in.a), hn::Load(d, in.b), hn::Load(d, in.c))};
+        const auto x = hn::Load(d, in.a), y = hn::Load(d, in.b), z = hn::Load(d, in.c);
         LaneEstimate<D> estimates[1];
-        estimateLanes<kQuadratic, kOrbit>(d, k, q, live, estimates, counters);
+        if (!kOrbit && kQuadratic && k.threeNumbers) {
+            const QuaternionLanes<hn::Vec<D>> u[1] = {k.loopFromWorld(x, y, z)};
+            estimateThreeNumbers(d, k, u, live, estimates, counters);
+        } else {
+            QuaternionLanes<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
+            estimateLanes<kQuadratic, kOrbit>(d, k, q, live, estimates, counters);
+        }
         const LaneEstimate<D>& e = estimates[0];
         counters.estimates += int64_t(count);
         hn::Store(e.distance, d, out.a);
