@@ -1,75 +1,53 @@
 #include "explore_command.h"
 
-#include <csignal>
-#include <cstdio>
-#include <thread>
+#include <unistd.h>
 
-#include "explore_server.h"
-#include "quaternia/parameters.h"
-#include "quaternia/scene_file.h"
-#include "quaternia/util/error.h"
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace quaternia {
-namespace {
 
-std::atomic<bool> gStopRequested{false};
-
-extern "C" void onStopSignal(int) {
-    gStopRequested = true;
-}
-
-}  // namespace
-
-void addExploreCommand(CLI::App& app, ExploreCommandOptions& options) {
-    CLI::App* explore = app.add_subcommand(
-        "explore", "Serve the live explorer: a web page to orbit, tune and export the set");
-    explore->add_option("scene", options.scenePath,
-                        "Scene file (TOML) the page starts from; without one the default scene");
-    explore->add_option("--port", options.port, "TCP port (0: any free port)")
+void addExploreOptions(CLI::App& command, ExploreCommandOptions& options) {
+    command.add_option("scene", options.scenePath,
+                       "Scene file (TOML) the page starts from; without one the default scene");
+    command.add_option("--port", options.port, "TCP port (0: any free port)")
         ->capture_default_str()
         ->check(CLI::Range(0, 65535));
-    explore
-        ->add_option("--bind", options.bind,
-                     "Address to listen on; the default serves this machine only")
+    command
+        .add_option("--bind", options.bind,
+                    "Address to listen on; the default serves this machine only")
         ->capture_default_str();
-    explore->add_option("--threads", options.threads, "Worker threads per render (0 = every core)")
+    command.add_option("--threads", options.threads, "Worker threads per render (0 = every core)")
         ->capture_default_str()
         ->check(CLI::Range(0, 1024));
 }
 
+void addExploreCommand(CLI::App& app, ExploreCommandOptions& options) {
+    CLI::App* explore = app.add_subcommand(
+        "explore", "Serve the live explorer: a web page to orbit, tune and export the set");
+    addExploreOptions(*explore, options);
+}
+
 int runExploreCommand(const ExploreCommandOptions& options) {
-    ExploreServerOptions serverOptions;
-    serverOptions.bind = options.bind;
-    serverOptions.port = options.port;
-    serverOptions.renderThreads = options.threads;
-    serverOptions.startScene =
-        options.scenePath.empty() ? defaultScene() : loadScene(options.scenePath);
-    validateScene(serverOptions.startScene);
-
-    ExploreServer server(serverOptions);
-    int port = server.bind();
-    std::string host =
-        options.bind.find(':') != std::string::npos ? "[" + options.bind + "]" : options.bind;
-    std::printf("quaternia explore: serving http://%s:%d/ (Ctrl-C stops)\n", host.c_str(), port);
-    std::fflush(stdout);
-
-    // Ctrl-C and SIGTERM stop the server from a watcher thread: httplib's stop() is not
-    // async-signal-safe, so the handler only sets a flag.
-    gStopRequested = false;
-    auto previousInt = std::signal(SIGINT, onStopSignal);
-    auto previousTerm = std::signal(SIGTERM, onStopSignal);
-    std::atomic<bool> finished{false};
-    std::thread watcher([&] {
-        while (!gStopRequested && !finished)
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        server.stop();
-    });
-    server.run();
-    finished = true;
-    watcher.join();
-    std::signal(SIGINT, previousInt);
-    std::signal(SIGTERM, previousTerm);
-    return 0;
+    std::error_code error;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (error) throw std::runtime_error("cannot find this program's path: " + error.message());
+    const std::string server = (self.parent_path() / "quaternia-explore").string();
+    std::vector<std::string> arguments = {
+        server,       "--port",    std::to_string(options.port),   "--bind",
+        options.bind, "--threads", std::to_string(options.threads)};
+    // After "--", a scene path that starts with '-' is still a path.
+    if (!options.scenePath.empty()) arguments.insert(arguments.end(), {"--", options.scenePath});
+    std::vector<char*> argv;
+    for (std::string& argument : arguments)
+        argv.push_back(argument.data());
+    argv.push_back(nullptr);
+    execv(server.c_str(), argv.data());
+    throw std::runtime_error("cannot start " + server + ": " + std::strerror(errno));
 }
 
 }  // namespace quaternia

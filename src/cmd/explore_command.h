@@ -1,5 +1,10 @@
 // `quaternia explore [SCENE.toml] [--port 8080] [--bind 127.0.0.1]`: serves the live explorer
 // (explore_server.h) until Ctrl-C, after printing its URL.
+//
+// The server runs in its own executable, quaternia-explore, beside quaternia, into which
+// `quaternia explore` turns (execv, the same process): the HTTP library pulls in OpenSSL and
+// Brotli, whose loading cost every other command about 4 ms before it started (a frame renders
+// in 150-200 ms). Both parse the options declared here.
 #pragma once
 
 #include <string>
@@ -15,7 +20,14 @@ struct ExploreCommandOptions {
     int threads = 0;
 };
 
+// The options of the command, declared on `command` (quaternia's explore subcommand, or
+// quaternia-explore's own application).
+void addExploreOptions(CLI::App& command, ExploreCommandOptions& options);
 void addExploreCommand(CLI::App& app, ExploreCommandOptions& options);
+// quaternia's side: becomes quaternia-explore with the parsed options; returns only if that
+// fails, by throwing.
 int runExploreCommand(const ExploreCommandOptions& options);
+// quaternia-explore's side: serves until Ctrl-C or SIGTERM.
+int serveExplorer(const ExploreCommandOptions& options);
 
 }  // namespace quaternia
