@@ -1,0 +1,46 @@
+// The run-time half of Highway's dynamic dispatch for the quaternia executable.
+//
+// HWY_DYNAMIC_DISPATCH (packet_kernels.cpp, shading_kernels.cpp) calls two functions at run
+// time, hwy::SupportedTargets and hwy::GetChosenTarget, which Debian's shared libhwy provides.
+// Loading that library also runs its static initialisers, among them a timer calibration
+// (hwy::platform::TimerResolution) of about 4.5 ms: every command paid that before it started,
+// and a 1080p frame renders in 150-200 ms. So quaternia defines the two here and links with
+// --as-needed, which leaves libhwy out of it (CMakeLists.txt); the tests, the benchmarks and
+// quaternia-explore, which use more of Highway's run time, link the library.
+//
+// A target is reported where the CPU has every feature Highway asks of it, or more: SSSE3;
+// SSE4 = SSE4.1 and 4.2 with CLMUL and AES; AVX2 = x86-64-v3 (AVX2, BMI1/2, F16C, FMA, LZCNT,
+// MOVBE) on top of SSE4; AVX3 = x86-64-v4 (AVX-512 F, CD, BW, DQ, VL) on top of AVX2. GCC's
+// __builtin_cpu_supports also checks that the OS saves the AVX and AVX-512 registers.
+#include <hwy/targets.h>
+
+#include <cstdint>
+
+namespace hwy {
+
+int64_t SupportedTargets() {
+#if HWY_ARCH_X86
+    __builtin_cpu_init();
+    int64_t targets = HWY_SCALAR;
+    if (!__builtin_cpu_supports("ssse3")) return targets;
+    targets |= HWY_SSSE3;
+    if (!(__builtin_cpu_supports("x86-64-v2") && __builtin_cpu_supports("pclmul") &&
+          __builtin_cpu_supports("aes"))) {
+        return targets;
+    }
+    targets |= HWY_SSE4;
+    if (!__builtin_cpu_supports("x86-64-v3")) return targets;
+    targets |= HWY_AVX2;
+    if (!__builtin_cpu_supports("x86-64-v4")) return targets;
+    return targets | HWY_AVX3;
+#else
+    return HWY_STATIC_TARGET;
+#endif
+}
+
+ChosenTarget& GetChosenTarget() {
+    static ChosenTarget chosen;
+    return chosen;
+}
+
+}  // namespace hwy
