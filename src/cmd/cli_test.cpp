@@ -2,6 +2,10 @@
 // and no output file; good input writes a PNG and a summary.
 #include "cli_fixture.h"
 
+#include <hwy/targets.h>
+
+#include <cstdint>
+
 namespace quaternia {
 namespace {
 
@@ -35,6 +39,18 @@ TEST_F(Cli, PrintsJsonSummary) {
         EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
     }
     EXPECT_TRUE(fs::exists(dir_ / "d.png"));
+}
+
+TEST_F(Cli, ChoosesTheLaneTargetHighwayChooses) {
+    // quaternia answers Highway's dispatch itself (highway_runtime.cpp); this test links
+    // Highway's own run time, whose choice is the best target both support and compiled.
+    const int64_t targets = hwy::SupportedTargets() & HWY_TARGETS;
+    ASSERT_NE(targets, 0);
+    const std::string best = hwy::TargetName(targets & -targets);
+    CommandResult r = run("render --json -o " + output() + kTiny);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("\"engine\": \"" + best + "\""), std::string::npos)
+        << "Highway chooses " << best << "; quaternia said " << r.out;
 }
 
 TEST_F(Cli, SceneFileAndOverridesApply) {
