@@ -285,6 +285,72 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
                                          });
 }
 
+// potentialNormalLanes' gradient for float lanes of s z^2 + c, in the three numbers of
+// estimateThreeNumbers: u = 2 s z = A + B i + E (E in span{j, k}, P = |E|^2) maps to A' = (A^2 -
+// B^2 - P) / 2 + 2 s c.w, B' = A B + 2 s c.x, E' = A E. A tangent of the slice, dU, then needs
+// dA, dB and dR = E . dE alone: dA' = A dA - B dB - dR, dB' = A dB + B dA, dR' = E' . dE' =
+// A (P dA + A dR) (from dE' = dA E + A dE), and u . dU = A dA + B dB + dR is the gradient of
+// |u|^2 / 2, 4 s^2 times that of |z|^2 / 2: the same direction. 27 operations per iterate with
+// the three tangents instead of about 50. `m` holds each lane's M; the gradient's components
+// along the slice's axes go to gx, gy, gz.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void threeNumberGradient(D d, const LaneConstants<D>& k, V x, V y, V z, V m, int fewest,
+                                    int most, V& gx, V& gy, V& gz, LaneCounters& counters) {
+    using T = hn::TFromD<D>;
+    const QuaternionLanes<V> u = k.loopFromWorld(x, y, z);
+    V a = u.w, b = u.x, p = hn::MulAdd(u.z, u.z, u.y * u.y);
+    V dA[3], dB[3], dR[3];
+    const QuaternionLanes<V>* axes[3] = {&k.loopAxis0, &k.loopAxis1, &k.loopAxis2};
+    for (int i = 0; i < 3; ++i) {
+        dA[i] = axes[i]->w, dB[i] = axes[i]->x;
+        dR[i] = hn::MulAdd(u.z, axes[i]->z, u.y * axes[i]->y);
+    }
+    const V half = hn::Set(d, T(0.5)), one = hn::Set(d, T(1));
+    const V large = hn::Set(d, T(1e30)), shrink = hn::Set(d, T(1e-10));
+    const size_t lanes = hn::Lanes(d);
+    V n = hn::Zero(d);
+    // One iterate; `hold(next, old)` keeps the old value in lanes that have done their M.
+    auto iterate = [&](const auto& hold) {
+        const V aa = a * a;
+        for (int i = 0; i < 3; ++i) {
+            const V nextA = hn::MulSub(a, dA[i], hn::MulAdd(b, dB[i], dR[i]));
+            const V nextB = hn::MulAdd(a, dB[i], b * dA[i]);
+            const V nextR = a * hn::MulAdd(p, dA[i], a * dR[i]);
+            dA[i] = hold(nextA, dA[i]), dB[i] = hold(nextB, dB[i]), dR[i] = hold(nextR, dR[i]);
+        }
+        const V nextA = hn::MulAdd(half, aa - hn::MulAdd(b, b, p), k.scaledC);
+        const V nextB = hn::MulAdd(a, b, k.scaledCi);
+        const V nextP = aa * p;
+        a = hold(nextA, a), b = hold(nextB, b), p = hold(nextP, p);
+        n = n + one;
+        // Only the direction matters: rescale the tangents together before they overflow.
+        V largest = hn::Zero(d);
+        for (int i = 0; i < 3; ++i)
+            largest =
+                hn::Max(largest, hn::Max(hn::Abs(dA[i]), hn::Max(hn::Abs(dB[i]), hn::Abs(dR[i]))));
+        const auto huge = largest > large;
+        if (!hn::AllFalse(d, huge)) {
+            const V factor = hn::IfThenElse(huge, shrink, one);
+            for (int i = 0; i < 3; ++i)
+                dA[i] = dA[i] * factor, dB[i] = dB[i] * factor, dR[i] = dR[i] * factor;
+        }
+    };
+    for (int iteration = 0; iteration < fewest; ++iteration) {
+        counters.laneIterations += int64_t(lanes);
+        counters.laneSlots += int64_t(lanes);
+        iterate([](V next, V) { return next; });
+    }
+    for (int iteration = fewest; iteration < most; ++iteration) {
+        const auto running = n < m;
+        counters.laneIterations += int64_t(hn::CountTrue(d, running));
+        counters.laneSlots += int64_t(lanes);
+        iterate([&](V next, V old) { return hn::IfThenElse(running, next, old); });
+    }
+    gx = hn::MulAdd(a, dA[0], hn::MulAdd(b, dB[0], dR[0]));
+    gy = hn::MulAdd(a, dA[1], hn::MulAdd(b, dB[1], dR[1]));
+    gz = hn::MulAdd(a, dA[2], hn::MulAdd(b, dB[2], dR[2]));
+}
+
 // Fractal::normal / JuliaSet::potentialGradient for a batch of points: the three tangents of
 // the slice carried through the Jacobian of p at each iterate (the chain rule), M_i iterations
 // in lane i.
@@ -311,6 +377,21 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
             most = std::max(most, m);
         }
         const V m = hn::Load(d, in.kind);
+        const int fewest = int(hn::GetLane(hn::MinOfLanes(d, m)));
+        if constexpr (kQuadratic && sizeof(T) == 4) {
+            V gx, gy, gz;
+            threeNumberGradient(d, k, hn::Load(d, in.a), hn::Load(d, in.b), hn::Load(d, in.c), m,
+                                fewest, most, gx, gy, gz, counters);
+            hn::Store(gx, d, out.a);
+            hn::Store(gy, d, out.b);
+            hn::Store(gz, d, out.c);
+            for (size_t lane = 0; lane < count; ++lane) {
+                Vector3d g(out.a[lane], out.b[lane], out.c[lane]);
+                Point3d p(points.x[begin + lane], points.y[begin + lane], points.z[begin + lane]);
+                normals[begin + lane] = normalOrOutward(g, p);
+            }
+            continue;
+        }
         // Only the direction matters: rescale all three together before they overflow.
         auto rescale = [&](QuaternionLanes<V>& t0, QuaternionLanes<V>& t1, QuaternionLanes<V>& t2) {
             V largest =
@@ -347,7 +428,6 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
         };
         // Lanes have their own M; while every lane still runs (most of the iterations, as the
         // M of neighbouring hits differ little), nothing needs holding.
-        const int fewest = int(hn::GetLane(hn::MinOfLanes(d, m)));
         for (int iteration = 0; iteration < fewest; ++iteration) {
             counters.laneIterations += int64_t(lanes);
             counters.laneSlots += int64_t(lanes);
