@@ -28,7 +28,7 @@ struct LaneConstants {
         scaledEstimateRadiusSquared, inverseFourScaleSquared;
     int degree, maxIterationCount;
     bool certified;  // bailout >= the certified escape radius: every escape is final
-    // Distances alone take estimateThreeNumbers: float lanes, z^2 + c, a certified bailout.
+    // Estimates take estimateThreeNumbers: float lanes, z^2 + c, a certified bailout.
     bool threeNumbers;
 
     // Float lanes take the fractal through LaneFractal::withComplexConstant, which changes no
@@ -296,8 +296,9 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
 // / 2 + 2 s c.w) + (a b + 2 s c.x) i + a e: e only scales, and a, b and rho = |e|^2 (rho <- a^2
 // rho) carry the orbit, 8 operations per iterate with the derivative instead of 13. Only the
 // counters want the iteration count; they count the running lanes instead of keeping each
-// lane's count. Fills distance, inside and radiusSquared.
-template <size_t K, class D>
+// lane's count. Fills distance, inside and radiusSquared; kOrbit also the trap and the
+// iteration count, as estimateLanes does.
+template <bool kOrbit, size_t K, class D>
 HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
                                      const QuaternionLanes<hn::Vec<D>> (&u)[K],
                                      const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
@@ -308,7 +309,8 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
     const V one = hn::Set(d, T(1)), half = hn::Set(d, T(0.5));
     V a[K], b[K], rho[K], aa[K], rest[K];  // rest = b^2 + rho, |u|^2 = aa + rest
     V r2[K], derivativeSquared[K], stopRadiusSquared[K], stopDerivativeSquared[K];
-    M done[K], inside[K];
+    V trap[K], stopIteration[K];  // kOrbit only
+    M done[K], inside[K], escaped[K];
     bool allDone = true;
     for (size_t j = 0; j < K; ++j) {
         a[j] = u[j].w, b[j] = u[j].x;
@@ -318,15 +320,17 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
         r2[j] = aa[j] + rest[j];
         derivativeSquared[j] = one;
         // Escaped at z_0: final unless the estimate radius is still ahead.
-        const auto escaped = hn::And(live[j], r2[j] > k.scaledBailoutSquared);
+        escaped[j] = hn::And(live[j], r2[j] > k.scaledBailoutSquared);
         const auto continues =
             hn::And(r2[j] > k.scaledEscapeRadiusSquared, r2[j] < k.scaledEstimateRadiusSquared);
-        done[j] = hn::Or(hn::Not(live[j]), hn::AndNot(continues, escaped));
+        done[j] = hn::Or(hn::Not(live[j]), hn::AndNot(continues, escaped[j]));
         inside[j] = hn::FirstN(d, 0);
         if (k.maxIterationCount <= 1) {
-            inside[j] = hn::AndNot(escaped, live[j]);
+            inside[j] = hn::AndNot(escaped[j], live[j]);
             done[j] = hn::Or(done[j], inside[j]);
         }
+        trap[j] = r2[j];
+        stopIteration[j] = hn::Zero(d);
         allDone = allDone && hn::AllTrue(d, done[j]);
         stopRadiusSquared[j] = r2[j];
         stopDerivativeSquared[j] = one;
@@ -346,10 +350,21 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
             aa[j] = a[j] * a[j];
             rest[j] = hn::MulAdd(b[j], b[j], rho[j]);
             r2[j] = aa[j] + rest[j];
+            const M doneBefore = done[j];
+            if constexpr (kOrbit) {
+                // The trap takes the iterates up to the first past the bailout.
+                const auto settled = hn::Or(escaped[j], doneBefore);
+                trap[j] = hn::IfThenElse(settled, trap[j], hn::Min(trap[j], r2[j]));
+                escaped[j] = hn::Or(escaped[j], r2[j] > k.scaledBailoutSquared);
+            }
             const bool groupDone =
                 settleCertified(d, r2[j], derivativeSquared[j], k.scaledEstimateRadiusSquared,
                                 k.scaledBailoutSquared, last, done[j], inside[j],
                                 stopRadiusSquared[j], stopDerivativeSquared[j], running);
+            if constexpr (kOrbit) {
+                stopIteration[j] = hn::IfThenElse(hn::AndNot(doneBefore, done[j]), hn::Set(d, T(n)),
+                                                  stopIteration[j]);
+            }
             allDone = allDone && groupDone;
         }
     }
@@ -364,6 +379,11 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
         result[j].distance = hn::IfThenZeroElse(
             inside[j], closingDistance(d, radiusSquared, derivative, k.stepScale));
         result[j].radiusSquared = radiusSquared;
+        if constexpr (kOrbit) {
+            result[j].trapSquared = trap[j] * k.inverseFourScaleSquared;
+            stopIteration[j] = hn::IfThenElse(unfinished, hn::Set(d, T(n - 1)), stopIteration[j]);
+            result[j].iterations = hn::IfThenElse(inside[j], k.maxIterations, stopIteration[j]);
+        }
     }
 }
 
@@ -389,7 +409,7 @@ HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes
     }
     if (!anyLive) return false;
     if (kQuadratic && k.threeNumbers) {
-        estimateThreeNumbers(d, k, q, live, e, counters);
+        estimateThreeNumbers<false>(d, k, q, live, e, counters);
     } else {
         estimateLanes<kQuadratic, false>(d, k, q, live, e, counters);
     }

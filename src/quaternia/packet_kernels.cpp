@@ -248,9 +248,9 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
         const hn::Mask<D> live[1] = {hn::FirstN(d, count)};
         const auto x = hn::Load(d, in.a), y = hn::Load(d, in.b), z = hn::Load(d, in.c);
         LaneEstimate<D> estimates[1];
-        if (!kOrbit && kQuadratic && k.threeNumbers) {
+        if (kQuadratic && k.threeNumbers) {
             const QuaternionLanes<hn::Vec<D>> u[1] = {k.loopFromWorld(x, y, z)};
-            estimateThreeNumbers(d, k, u, live, estimates, counters);
+            estimateThreeNumbers<kOrbit>(d, k, u, live, estimates, counters);
         } else {
             QuaternionLanes<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
             estimateLanes<kQuadratic, kOrbit>(d, k, q, live, estimates, counters);

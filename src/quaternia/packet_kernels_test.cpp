@@ -126,6 +126,12 @@ void expectEstimatesMatch(const Fractal& fractal, unsigned seed) {
             } else if (!reference.inside) {
                 // The float lanes stop the continuation at |z| = 100 rather than 1e4.
                 ASSERT_NEAR(e.distance, reference.distance, 0.2 * reference.distance + 1e-5);
+                ASSERT_GE(e.iterations, reference.escapeIteration);
+                ASSERT_LE(e.iterations, reference.iterations);
+                ASSERT_NEAR(e.trap, reference.trap, 1e-4 * (1 + reference.trap));
+            } else {
+                ASSERT_EQ(e.iterations, reference.iterations);
+                ASSERT_NEAR(e.trap, reference.trap, 1e-4 * (1 + reference.trap));
             }
         }
         EXPECT_GT(insideCount, 30);
@@ -155,15 +161,7 @@ TEST(PacketKernels, DistancesAloneEqualTheFullEstimates) {
             EXPECT_EQ(alone.estimates, full.estimates);
             int inside = 0;
             for (size_t i = 0; i < points.size(); ++i) {
-                if (precision == Precision::Double) {
-                    ASSERT_EQ(distances[i], estimates[i].distance) << "point " << i;
-                } else {
-                    // Float lanes iterate z^2 + c in three numbers when only the distance is
-                    // wanted (estimate_lanes-inl.h), rounding apart from the four of the orbit;
-                    // case01 differs by 1e-4 at most.
-                    ASSERT_NEAR(distances[i], estimates[i].distance, 5e-4 * estimates[i].distance)
-                        << "point " << i;
-                }
+                ASSERT_EQ(distances[i], estimates[i].distance) << "point " << i;
                 inside += estimates[i].inside;
             }
             EXPECT_GT(inside, 30);
