@@ -125,15 +125,6 @@ Color Shader::albedo(const DistanceEstimate& estimate) const {
     }
 }
 
-double Shader::keyDiffuse(const Vector3d& normal) const {
-    return std::max(0.0, dot(normal, lightDirection_));
-}
-
-Point3d Shader::shadowOrigin(const Point3d& surface, const Vector3d& normal,
-                             double footprint) const {
-    return surface + normal * (2 * footprint + 1e-6 * fractal_.boundingRadius());
-}
-
 Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats) const {
     SurfaceSample sample;
     sample.normal = fractal_.normal(hit.outside);

@@ -53,10 +53,14 @@ class Shader {
 
     // The pieces both paths share. The key light's diffuse term (0 where it does not reach the
     // front of the surface, and no shadow ray is needed).
-    double keyDiffuse(const Vector3d& normal) const;
+    double keyDiffuse(const Vector3d& normal) const {
+        return std::max(0.0, dot(normal, lightDirection_));
+    }
     // Where the shadow ray starts: a few footprints off the surface so that it does not hit the
     // surface it leaves.
-    Point3d shadowOrigin(const Point3d& surface, const Vector3d& normal, double footprint) const;
+    Point3d shadowOrigin(const Point3d& surface, const Vector3d& normal, double footprint) const {
+        return surface + normal * (2 * footprint + 1e-6 * fractal_.boundingRadius());
+    }
     // The marching settings of shadow rays (Shadows::None: no shadow rays at all).
     Shadows shadows() const { return settings_.shadows; }
     double shadowMinimumStep() const;
