@@ -60,12 +60,20 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
             const double* blockRow =
                 blockStart_.data() + size_t((py - tile.y0) / kConeBlock * blocksAcross);
             const int rowBlock = (py - tile.y0) / kConeBlock * blocksAcross;
+            // One sample per pixel goes through the pixel centres, whose directions the row
+            // gives by additions (generateRay divides for each).
+            const Camera::RowDirections row = camera_.rowDirections(py);
             for (int px = tile.x0; px < tile.x1; ++px) {
                 const int column = (px - tile.x0) / kConeBlock;
                 const double start = blockRow[column];
                 if (start == std::numeric_limits<double>::infinity()) continue;  // cone missed
-                auto [sx, sy] = samplePosition(k, samples_, px, py);
-                Ray ray = camera_.generateRay(px + sx, py + sy);
+                Ray ray;
+                if (samples_ == 1) {
+                    ray = Ray{camera_.position(), normalize(row.first + row.step * double(px))};
+                } else {
+                    auto [sx, sy] = samplePosition(k, samples_, px, py);
+                    ray = camera_.generateRay(px + sx, py + sy);
+                }
                 auto interval = intersectSphere(ray, boundingRadius_);
                 if (!interval) continue;
                 const double near = std::max(interval->tNear, start);
