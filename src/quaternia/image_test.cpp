@@ -19,6 +19,21 @@ TEST(Image, IsRowMajorWithRowZeroAtTheTop) {
     EXPECT_EQ(image.pixels()[3].g, 1.0f);
 }
 
+TEST(Image, FrameSizedImagesStartTransparentAndCopy) {
+    // 1280x720 float RGBA is 14 MB: a block of its own (zeroedAllocate), reused after a free.
+    for (int round = 0; round < 2; ++round) {
+        Image image(1280, 720);
+        for (const Rgba& pixel : image.pixels())
+            ASSERT_EQ(pixel, Rgba{});
+        image.at(0, 0) = Rgba{1, 2, 3, 4};
+        image.at(1279, 719) = Rgba{5, 6, 7, 8};
+        Image copy = image;
+        EXPECT_EQ(copy.at(0, 0), (Rgba{1, 2, 3, 4}));
+        EXPECT_EQ(copy.at(1279, 719), (Rgba{5, 6, 7, 8}));
+        EXPECT_EQ(copy.at(640, 360), Rgba{});
+    }
+}
+
 TEST(Image, DefaultIsEmptyAndNegativeSizeThrows) {
     Image image;
     EXPECT_EQ(image.width(), 0);
