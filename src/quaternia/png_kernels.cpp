@@ -201,6 +201,53 @@ void FilterPaethRow(const uint8_t* HWY_RESTRICT row, const uint8_t* HWY_RESTRICT
     if (i < rowBytes) filterAt(row, previous, out, rowBytes - lanes);
 }
 
+uint32_t Adler32Update(uint32_t adler, const uint8_t* HWY_RESTRICT bytes, size_t size) {
+    // s1 is 1 plus the sum of the bytes, s2 the sum of s1 after each byte, both modulo kBase.
+    constexpr uint64_t kBase = 65521;
+    // Chunks per block, small enough that no 32-bit lane or sum of lanes below overflows with
+    // vectors of up to kMaxLaneBytes (32 lanes of 16 bits).
+    constexpr size_t kBlockChunks = 256;
+    uint64_t s1 = adler & 0xffff, s2 = adler >> 16;
+    // A chunk is a vector of bytes widened to 16-bit lanes, multiplied and summed in pairs
+    // into 32-bit lanes.
+    const hn::ScalableTag<int16_t> d16;
+    const hn::Rebind<uint8_t, decltype(d16)> d8;
+    const hn::RepartitionToWide<decltype(d16)> d32;
+    const size_t lanes = hn::Lanes(d16);
+    const auto ones = hn::Set(d16, 1);
+    // Byte j of a chunk is in s2 once for every byte from j to the chunk's end: lanes - j times.
+    const auto weights = hn::Sub(hn::Set(d16, int16_t(lanes)), hn::Iota(d16, 0));
+    auto sumOfLanes = [&](hn::Vec<decltype(d32)> v) {
+        return uint64_t(hn::GetLane(hn::SumOfLanes(d32, v)));
+    };
+    size_t i = 0;
+    while (size - i >= lanes) {
+        const size_t chunks = std::min((size - i) / lanes, kBlockChunks);
+        // The bytes' sum, the sum of that sum before each chunk, and the weighted sum; each
+        // in two accumulators, as the second may take part of the pairs on some targets.
+        auto sum = hn::Zero(d32), sumBefore = hn::Zero(d32), weighted = hn::Zero(d32);
+        auto sumRest = hn::Zero(d32), weightedRest = hn::Zero(d32);
+        for (size_t chunk = 0; chunk < chunks; ++chunk, i += lanes) {
+            const auto x = hn::PromoteTo(d16, hn::LoadU(d8, bytes + i));
+            sumBefore = hn::Add(sumBefore, hn::Add(sum, sumRest));
+            sum = hn::ReorderWidenMulAccumulate(d32, x, ones, sum, sumRest);
+            weighted = hn::ReorderWidenMulAccumulate(d32, x, weights, weighted, weightedRest);
+        }
+        // Each byte of the block adds the s1 before it to s2: the block's starting s1, the
+        // bytes of the chunks before its own (`lanes` times per chunk) and its own chunk's.
+        s2 += chunks * lanes * s1 + lanes * sumOfLanes(sumBefore) +
+              sumOfLanes(hn::Add(weighted, weightedRest));
+        s1 += sumOfLanes(hn::Add(sum, sumRest));
+        s1 %= kBase;
+        s2 %= kBase;
+    }
+    for (; i < size; ++i) {  // fewer bytes than a chunk
+        s1 += bytes[i];
+        s2 += s1;
+    }
+    return uint32_t((s2 % kBase) << 16 | (s1 % kBase));
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace quaternia
 HWY_AFTER_NAMESPACE();
@@ -211,6 +258,7 @@ namespace quaternia {
 HWY_EXPORT(QuantisePngSamples);
 HWY_EXPORT(AllAlphaQuantiseToMax);
 HWY_EXPORT(FilterPaethRow);
+HWY_EXPORT(Adler32Update);
 
 void quantisePngSamples(const float* rgba, size_t pixels, int bitDepth, bool withAlpha,
                         uint8_t* out) {
@@ -222,6 +270,10 @@ bool allAlphaQuantiseToMax(const float* rgba, size_t pixels, int bitDepth) {
 void filterPaethRow(const uint8_t* row, const uint8_t* previous, size_t rowBytes,
                     size_t bytesPerPixel, uint8_t* out) {
     HWY_DYNAMIC_DISPATCH(FilterPaethRow)(row, previous, rowBytes, bytesPerPixel, out);
+}
+
+uint32_t adler32Update(uint32_t adler, const uint8_t* bytes, size_t size) {
+    return HWY_DYNAMIC_DISPATCH(Adler32Update)(adler, bytes, size);
 }
 
 }  // namespace quaternia

@@ -1,5 +1,5 @@
 // SIMD kernels of PNG encoding (png_io.cpp, png_writer.cpp): quantising float pixels to samples,
-// the opacity check and the Paeth filter, compiled per instruction set
+// the opacity check, the Paeth filter and the zlib stream's checksum, compiled per instruction set
 // by Highway like shading_kernels.h and chosen at run time. Each gives exactly the bytes of the
 // scalar formula it replaces, which png_kernels_test.cpp keeps as its reference.
 #pragma once
@@ -28,5 +28,9 @@ bool allAlphaQuantiseToMax(const float* rgba, size_t pixels, int bitDepth);
 // bytesPerPixel is 1 to 8, as in PNG's formats.
 void filterPaethRow(const uint8_t* row, const uint8_t* previous, size_t rowBytes,
                     size_t bytesPerPixel, uint8_t* out);
+
+// The Adler-32 checksum (RFC 1950) of `size` bytes, continued from `adler` (1 before any byte):
+// the value zlib's adler32_z gives, whose loop (zlib 1.2) is scalar.
+uint32_t adler32Update(uint32_t adler, const uint8_t* bytes, size_t size);
 
 }  // namespace quaternia

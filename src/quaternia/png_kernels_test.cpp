@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <hwy/targets.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -216,6 +217,34 @@ TEST(PngKernels, OpacityCheckAgreesWithTheQuantisedAlpha) {
                 }
             }
         }
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
+// The checksum equals zlib's from any starting value, for every length up to a few chunks and
+// for long runs (all 255 being the largest sums), on every target.
+TEST(PngKernels, Adler32EqualsZlibs) {
+    std::mt19937 random(3);
+    std::vector<uint8_t> bytes(1 << 20);
+    for (uint8_t& b : bytes)
+        b = uint8_t(random());
+    const std::vector<uint8_t> saturated(300000, 255);
+    std::uniform_int_distribution<uint32_t> half(0, 65520);
+    for (int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        for (size_t size = 0; size <= 300; ++size) {
+            const uint32_t start = size % 3 == 0 ? 1 : half(random) << 16 | half(random);
+            ASSERT_EQ(adler32Update(start, bytes.data() + size, size),
+                      adler32_z(start, bytes.data() + size, size))
+                << hwy::TargetName(target) << ", " << size << " bytes";
+        }
+        const uint32_t largest = 65520u << 16 | 65520u;
+        ASSERT_EQ(adler32Update(largest, bytes.data(), bytes.size()),
+                  adler32_z(largest, bytes.data(), bytes.size()))
+            << hwy::TargetName(target);
+        ASSERT_EQ(adler32Update(largest, saturated.data(), saturated.size()),
+                  adler32_z(largest, saturated.data(), saturated.size()))
+            << hwy::TargetName(target);
     }
     hwy::SetSupportedTargetsForTest(0);
 }

@@ -209,7 +209,8 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
     options.threads = threads;
     options.chunkSize = 1;  // one piece at a time, so uneven pieces balance
 
-    // The zlib stream's checksum is of the filtered bytes, summed piece by piece.
+    // The zlib stream's checksum is of the filtered bytes, summed piece by piece (in lanes:
+    // zlib's adler32 is scalar) and joined by adler32_combine.
     std::vector<uLong> pieceAdler(pieces.count);
     // Each piece on its own deflate stream, primed with the 32 KiB before it; the sync flush
     // ends it on a byte boundary with the block open for the next, so the pieces simply join.
@@ -240,7 +241,7 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
             }
             const uint8_t* own = filtered.data() + (firstRow - filterFrom) * filteredRowBytes;
             const size_t ownBytes = (endRow - firstRow) * filteredRowBytes;
-            pieceAdler[piece] = adler32_z(adler32_z(0, nullptr, 0), own, ownBytes);
+            pieceAdler[piece] = adler32Update(1, own, ownBytes);
 
             ByteBuffer& out = compressed[piece];
             if (piece == 0) out.append(kZlibHeader, sizeof kZlibHeader);
