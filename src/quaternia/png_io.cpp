@@ -11,7 +11,6 @@
 
 #include <png.h>
 
-#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -21,6 +20,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "png_kernels.h"
 #include "png_writer.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -50,44 +50,23 @@ void onPngWarning(png_structp, png_const_charp) {}  // library code never prints
 
 // ---- encoding ----------------------------------------------------------------------------
 
-// Clamped to [0, 1] (NaN to 0), then rounded to the nearest of 0 .. MaxValue. In double: a
-// float times 65535 keeps too few fractional bits to round reliably.
-template <uint32_t MaxValue>
-uint32_t quantise(float value) {
-    // Selects rather than branches, so that loops over pixels vectorise.
+// Clamped to [0, 1] (NaN to 0), then rounded to the nearest of 0 .. 65535, big-endian as PNG
+// stores it; returns the sample's end. In double: a float times 65535 keeps too few fractional
+// bits to round reliably. The grey depth pass's formula; colour images are quantised in lanes
+// by quantisePngSamples (png_kernels.h), to exactly what this gives.
+uint8_t* putSample16(uint8_t* out, float value) {
+    // Selects rather than branches, so that the loop over pixels vectorises.
     const float clamped = value > 0.0f ? (value < 1.0f ? value : 1.0f) : 0.0f;
-    return uint32_t(double(clamped) * double(MaxValue) + 0.5);
-}
-
-// Writes one quantised sample, big-endian as PNG stores it, and returns its end.
-template <int BitDepth>
-uint8_t* putSample(uint8_t* out, float value) {
-    if constexpr (BitDepth == 8) {
-        *out++ = uint8_t(quantise<255>(value));
-    } else {
-        const uint32_t v = quantise<65535>(value);
-        *out++ = uint8_t(v >> 8);
-        *out++ = uint8_t(v & 0xff);
-    }
+    const uint32_t v = uint32_t(double(clamped) * 65535.0 + 0.5);
+    *out++ = uint8_t(v >> 8);
+    *out++ = uint8_t(v & 0xff);
     return out;
 }
 
-// Pixels [0, count) as PNG samples: r, g, b and, WithAlpha, a.
-template <int BitDepth, bool WithAlpha>
-void putPixels(const Rgba* pixels, size_t count, uint8_t* out) {
-    for (size_t i = 0; i < count; ++i) {
-        const Rgba& p = pixels[i];
-        out = putSample<BitDepth>(out, p.r);
-        out = putSample<BitDepth>(out, p.g);
-        out = putSample<BitDepth>(out, p.b);
-        if constexpr (WithAlpha) out = putSample<BitDepth>(out, p.a);
-    }
-}
-
-// Whether every pixel's alpha quantises to MaxValue: checked in blocks on every core, each block
-// without branches (it vectorises); a block with a lower one ends the search.
-template <uint32_t MaxValue>
-bool allAlphaQuantiseTo(const Image& image) {
+// Whether every pixel's alpha quantises to the largest sample of bitDepth bits: checked in
+// blocks on every core; a block with a lower one ends the search.
+bool alphaIsAllMax(const Image& image, int bitDepth) {
+    static_assert(sizeof(Rgba) == 4 * sizeof(float), "Rgba is four packed floats");
     const Rgba* pixels = image.pixels().data();
     const int64_t count = int64_t(image.pixels().size());
     std::atomic<bool> lower{false};
@@ -95,10 +74,8 @@ bool allAlphaQuantiseTo(const Image& image) {
     options.chunkSize = kAlphaBlockPixels;
     parallelFor(count, options, [&](int64_t begin, int64_t end, int) {
         if (lower.load(std::memory_order_relaxed)) return;
-        uint32_t lowest = MaxValue;
-        for (int64_t i = begin; i < end; ++i)
-            lowest = std::min(lowest, quantise<MaxValue>(pixels[i].a));
-        if (lowest != MaxValue) lower.store(true, std::memory_order_relaxed);
+        if (!allAlphaQuantiseToMax(&pixels[begin].r, size_t(end - begin), bitDepth))
+            lower.store(true, std::memory_order_relaxed);
     });
     return !lower.load();
 }
@@ -209,22 +186,13 @@ std::vector<uint8_t> encodePng(const Image& image, int bitDepth) {
                                     std::to_string(bitDepth));
     // An alpha channel that is all maximum says nothing: RGB is a quarter less to compress and
     // decodes the same (opaque renders, plane images).
-    const bool opaque =
-        bitDepth == 8 ? allAlphaQuantiseTo<255>(image) : allAlphaQuantiseTo<65535>(image);
+    const bool opaque = alphaIsAllMax(image, bitDepth);
     const PngFormat format{image.width(), image.height(), bitDepth,
                            opaque ? PngColorType::Rgb : PngColorType::Rgba};
     const size_t width = size_t(image.width());
     // Each row quantised as the writer asks for it.
     return writePngRows(format, [&](size_t y, uint8_t* out) {
-        const Rgba* row = &image.at(0, int(y));
-        if (bitDepth == 8 && opaque)
-            putPixels<8, false>(row, width, out);
-        else if (bitDepth == 8)
-            putPixels<8, true>(row, width, out);
-        else if (opaque)
-            putPixels<16, false>(row, width, out);
-        else
-            putPixels<16, true>(row, width, out);
+        quantisePngSamples(&image.at(0, int(y)).r, width, bitDepth, !opaque, out);
         return static_cast<const uint8_t*>(out);
     });
 }
@@ -236,7 +204,7 @@ std::vector<uint8_t> encodeGrayPng16(const GrayImage& image) {
     return writePngRows(format, [&](size_t y, uint8_t* out) {
         uint8_t* sample = out;
         for (size_t x = 0; x < width; ++x)
-            sample = putSample<16>(sample, values[y * width + x]);
+            sample = putSample16(sample, values[y * width + x]);
         return static_cast<const uint8_t*>(out);
     });
 }

@@ -3,13 +3,13 @@
 #include <zlib.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>
 
+#include "png_kernels.h"
 #include "util/parallel.h"
 
 namespace quaternia {
@@ -68,30 +68,6 @@ void appendChunk(std::vector<uint8_t>& png, const char (&type)[5], const uint8_t
     }
     putU32(field, uint32_t(crc));
     png.insert(png.end(), field, field + 4);
-}
-
-// The Paeth predictor of PNG spec 9.4, from the bytes to the left (a), above (b) and above
-// left (c): whichever is nearest to a + b - c, ties going to a, then b. The distances are
-// written out so the compiler can turn the row loop into vector selects.
-inline int paethPredictor(int a, int b, int c) {
-    const int distanceA = std::abs(b - c);
-    const int distanceB = std::abs(a - c);
-    const int distanceC = std::abs(a + b - 2 * c);
-    const int nearerOfBC = distanceB <= distanceC ? b : c;
-    return distanceA <= distanceB && distanceA <= distanceC ? a : nearerOfBC;
-}
-
-// One scanline: the filter byte, then each byte minus its prediction from the raw (unfiltered)
-// bytes. Left of the first pixel counts as 0, as does the row above the first row.
-void filterRowPaeth(const uint8_t* __restrict row, const uint8_t* __restrict previous,
-                    size_t rowBytes, size_t bytesPerPixel, uint8_t* __restrict out) {
-    *out++ = kPaethFilter;
-    const size_t leftEdge = std::min(bytesPerPixel, rowBytes);
-    for (size_t i = 0; i < leftEdge; ++i)
-        out[i] = uint8_t(row[i] - paethPredictor(0, previous[i], 0));
-    for (size_t i = leftEdge; i < rowBytes; ++i)
-        out[i] = uint8_t(row[i] - paethPredictor(row[i - bytesPerPixel], previous[i],
-                                                 previous[i - bytesPerPixel]));
 }
 
 // Rows [firstRow, endRow) of each piece; every piece but the last has rowsPerPiece rows.
@@ -233,7 +209,8 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
     options.threads = threads;
     options.chunkSize = 1;  // one piece at a time, so uneven pieces balance
 
-    // The zlib stream's checksum is of the filtered bytes, summed piece by piece.
+    // The zlib stream's checksum is of the filtered bytes, summed piece by piece (in lanes:
+    // zlib's adler32 is scalar) and joined by adler32_combine.
     std::vector<uLong> pieceAdler(pieces.count);
     // Each piece on its own deflate stream, primed with the 32 KiB before it; the sync flush
     // ends it on a byte boundary with the block open for the next, so the pieces simply join.
@@ -255,14 +232,16 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
                 1;  // the scratch row the source may write next; previous may be in the other
             for (size_t y = filterFrom; y < endRow; ++y) {
                 const uint8_t* row = rowAt(y, scratch[next].data());
-                filterRowPaeth(row, previous, rowBytes, bytesPerPixel,
-                               filtered.data() + (y - filterFrom) * filteredRowBytes);
+                // A scanline: the filter byte, then the row's bytes filtered.
+                uint8_t* scanline = filtered.data() + (y - filterFrom) * filteredRowBytes;
+                scanline[0] = kPaethFilter;
+                filterPaethRow(row, previous, rowBytes, bytesPerPixel, scanline + 1);
                 previous = row;
                 next ^= 1;
             }
             const uint8_t* own = filtered.data() + (firstRow - filterFrom) * filteredRowBytes;
             const size_t ownBytes = (endRow - firstRow) * filteredRowBytes;
-            pieceAdler[piece] = adler32_z(adler32_z(0, nullptr, 0), own, ownBytes);
+            pieceAdler[piece] = adler32Update(1, own, ownBytes);
 
             ByteBuffer& out = compressed[piece];
             if (piece == 0) out.append(kZlibHeader, sizeof kZlibHeader);
