@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "deflate_runs.h"
 #include "png_kernels.h"
 #include "util/parallel.h"
 
@@ -16,31 +17,20 @@ namespace quaternia {
 
 namespace {
 
-// About this many filtered bytes per piece: big enough that the pieces' seams (a sync flush,
-// and matches that cannot reach back past the 32 KiB dictionary) cost little, small enough that
-// a 1080p frame gives every core several pieces. The cut depends on the image alone.
+// About this many filtered bytes per piece: big enough that the pieces' seams (an empty stored
+// block, and new Huffman codes) cost little, small enough that a 1080p frame gives every core
+// several pieces. The cut depends on the image alone.
 constexpr size_t kPieceBytes = size_t(256) << 10;
-// Deflate's window: each piece starts from the 32 KiB before it, so its first rows compress as
-// well as they would in one long stream.
-constexpr size_t kDictionaryBytes = size_t(32) << 10;
-// Speed over the last few percent of size, as libpng was set up before: zlib's level 1 with
-// the Paeth filter is several times faster than the defaults (the adaptive filter search at
-// level 6) and makes files about 10% larger on renders.
-constexpr int kCompressionLevel = 1;
-// Run-length matches only (distance 1): Paeth-filtered renders are mostly runs of small
-// residuals, and on them Z_RLE made 1080p frames about 13% smaller than the default strategy at
-// the same speed (BM_EncodePng).
-constexpr int kStrategy = Z_RLE;
-constexpr int kMemLevel = 8;  // zlib's and libpng's default
-constexpr int kRawDeflateWindowBits = -15;
-// zlib's own header for a 32 KiB window and the fastest level (RFC 1950: CMF 0x78, FLG 0x01,
+// The Paeth filter, and deflate with runs of the byte before as its only matches
+// (deflate_runs.h: what zlib's level 1 with Z_RLE does, several times faster): as libpng was
+// set up before, speed over the last few percent of size. On renders the runs made 1080p
+// frames about 13% smaller than zlib's default strategy at level 1 (BM_EncodePng).
+// The zlib header for a 32 KiB window and the fastest level (RFC 1950: CMF 0x78, FLG 0x01,
 // whose check bits make 0x7801 a multiple of 31).
 constexpr uint8_t kZlibHeader[2] = {0x78, 0x01};
 // PNG's limit on a chunk's length is 2^31 - 1; a piece larger than this (only with rows of
 // hundreds of MiB) spreads over several IDAT chunks.
 constexpr size_t kMaxChunkData = size_t(1) << 30;
-// zlib counts input and output in 32-bit uInt: longer spans go in slices.
-constexpr size_t kMaxZlibSpan = size_t(1) << 30;
 
 constexpr uint8_t kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 constexpr uint8_t kPaethFilter = 4;
@@ -84,7 +74,7 @@ struct PieceLayout {
 };
 
 // Bytes appended to a buffer whose new room is not zeroed first: deflate writes only part of
-// the room it is given (deflateBound, about the size of its input), and zeroing that in every
+// the room it is given (deflateRunsBound, about the size of its input), and zeroing that in every
 // piece would touch as many bytes again as the whole filtered image.
 class ByteBuffer {
   public:
@@ -112,55 +102,6 @@ class ByteBuffer {
   private:
     std::unique_ptr<uint8_t[]> bytes_;
     size_t size_ = 0, capacity_ = 0;
-};
-
-class RawDeflater {
-  public:
-    RawDeflater() {
-        const int status = deflateInit2(&stream_, kCompressionLevel, Z_DEFLATED,
-                                        kRawDeflateWindowBits, kMemLevel, kStrategy);
-        if (status == Z_MEM_ERROR) throw std::bad_alloc();
-        if (status != Z_OK) throw std::runtime_error("cannot encode PNG: zlib cannot start");
-    }
-    ~RawDeflater() { deflateEnd(&stream_); }
-    RawDeflater(const RawDeflater&) = delete;
-    RawDeflater& operator=(const RawDeflater&) = delete;
-
-    // Before the first compress: the bytes that came before, for matches to refer back to.
-    void prime(const uint8_t* dictionary, size_t size) {
-        if (size == 0) return;
-        if (deflateSetDictionary(&stream_, dictionary, uInt(size)) != Z_OK)
-            throw std::runtime_error("cannot encode PNG: zlib refused the dictionary");
-    }
-
-    // Appends `input` deflated to `out`, ending with `flush` (Z_SYNC_FLUSH: a byte boundary
-    // the next piece continues from; Z_FINISH: the last block).
-    void compress(const uint8_t* input, size_t size, int flush, ByteBuffer& out) {
-        // Room for everything in one call as a rule; the sync flush's empty block may need a
-        // few bytes beyond deflateBound, which the loop below grows for.
-        out.room(deflateBound(&stream_, uLong(std::min(size, kMaxZlibSpan))) + 64);
-        size_t offset = 0;
-        do {
-            const size_t slice = std::min(size - offset, kMaxZlibSpan);
-            const bool lastSlice = offset + slice == size;
-            stream_.next_in = const_cast<Bytef*>(input + offset);
-            stream_.avail_in = uInt(slice);
-            // Until zlib leaves output room unused, it may have more to write.
-            do {
-                const size_t room = std::min(std::max<size_t>(out.roomLeft(), 64), kMaxZlibSpan);
-                stream_.next_out = out.room(room);
-                stream_.avail_out = uInt(room);
-                const int status = deflate(&stream_, lastSlice ? flush : Z_NO_FLUSH);
-                out.commit(room - stream_.avail_out);
-                if (status == Z_STREAM_ERROR)
-                    throw std::runtime_error("cannot encode PNG: zlib failed while deflating");
-            } while (stream_.avail_out == 0);
-            offset += slice;
-        } while (offset < size);
-    }
-
-  private:
-    z_stream stream_{};
 };
 
 void checkFormat(const PngFormat& format) {
@@ -199,11 +140,11 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
     const size_t bytesPerPixel = size_t(pngChannels(format.colorType) * format.bitDepth / 8);
     const PieceLayout pieces(height, filteredRowBytes);
     // Each piece is filtered and deflated by one task, from the rows the source gives it: its
-    // own, and before them those whose filtered bytes are its dictionary (the 32 KiB before it)
-    // and the one row above those that Paeth predicts from. A piece's dictionary rows are
-    // filtered twice, by it and by the piece before; nothing is shared between tasks, and the
-    // samples never exist as a whole image.
-    const size_t dictionaryRows = (kDictionaryBytes + filteredRowBytes - 1) / filteredRowBytes;
+    // own, and before them the row whose last filtered byte a run at its start may continue and
+    // the one row above that, which Paeth predicts from. That row is filtered twice, by this
+    // piece and the one before; nothing is shared between tasks, and the samples never exist as
+    // a whole image.
+    const size_t rowsBefore = 1;
 
     ParallelOptions options;
     options.threads = threads;
@@ -212,10 +153,9 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
     // The zlib stream's checksum is of the filtered bytes, summed piece by piece (in lanes:
     // zlib's adler32 is scalar) and joined by adler32_combine.
     std::vector<uLong> pieceAdler(pieces.count);
-    // Each piece on its own deflate stream, primed with the 32 KiB before it; the sync flush
-    // ends it on a byte boundary with the block open for the next, so the pieces simply join.
-    // The first carries the zlib header, the last the final block and the checksum (appended
-    // below, once every piece's sum is known).
+    // Each piece deflated on its own, ending on a byte boundary (but the last, which ends with
+    // the final block), so that the pieces simply join. The first carries the zlib header, the
+    // last the checksum (appended below, once every piece's sum is known).
     std::vector<ByteBuffer> compressed(pieces.count);
     parallelFor(int64_t(pieces.count), options, [&](int64_t begin, int64_t end, int) {
         std::vector<uint8_t> zeroRow(rowBytes, 0), scratch[2];
@@ -224,7 +164,7 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
         std::vector<uint8_t> filtered;
         for (size_t piece = size_t(begin); piece < size_t(end); ++piece) {
             const size_t firstRow = pieces.firstRow(piece), endRow = pieces.endRow(piece, height);
-            const size_t filterFrom = firstRow - std::min(firstRow, dictionaryRows);
+            const size_t filterFrom = firstRow - std::min(firstRow, rowsBefore);
             filtered.resize((endRow - filterFrom) * filteredRowBytes);
             const uint8_t* previous =
                 filterFrom == 0 ? zeroRow.data() : rowAt(filterFrom - 1, scratch[0].data());
@@ -245,11 +185,10 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
 
             ByteBuffer& out = compressed[piece];
             if (piece == 0) out.append(kZlibHeader, sizeof kZlibHeader);
-            RawDeflater deflater;
-            const size_t dictionary = std::min(size_t(own - filtered.data()), kDictionaryBytes);
-            deflater.prime(own - dictionary, dictionary);
-            deflater.compress(own, ownBytes, piece + 1 == pieces.count ? Z_FINISH : Z_SYNC_FLUSH,
-                              out);
+            const int before = own > filtered.data() ? own[-1] : -1;
+            const size_t written = deflateRuns(own, ownBytes, before, piece + 1 == pieces.count,
+                                               out.room(deflateRunsBound(ownBytes)));
+            out.commit(written);
         }
     });
     uLong adler = adler32_z(0, nullptr, 0);

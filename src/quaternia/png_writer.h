@@ -34,12 +34,12 @@ inline int pngChannels(PngColorType type) {
 size_t pngRowBytes(const PngFormat& format);
 
 // The rows in PNG's filtering, compressed: every row Paeth-filtered, the rows cut into pieces of
-// about 256 KiB of filtered bytes, each piece deflated (zlib level 1) primed with the last 32 KiB
-// before it and written as one IDAT chunk. `samples` holds the rows back to back in PNG's byte
-// order (16-bit samples big-endian), height * pngRowBytes(format) bytes. `threads` as for
+// about 256 KiB of filtered bytes, each piece deflated with runs as its only matches
+// (deflate_runs.h) and written as one IDAT chunk. `samples` holds the rows back to back in PNG's
+// byte order (16-bit samples big-endian), height * pngRowBytes(format) bytes. `threads` as for
 // parallelFor: 0 is every core; the bytes do not depend on it. Throws std::invalid_argument for
 // an empty image, a bit depth other than 8 or 16, or a wrong number of samples;
-// std::runtime_error if zlib fails, std::bad_alloc when memory runs out.
+// std::bad_alloc when memory runs out.
 std::vector<uint8_t> writePngBytes(const PngFormat& format, std::span<const uint8_t> samples,
                                    int threads = 0);
 
