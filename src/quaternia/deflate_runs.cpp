@@ -161,7 +161,8 @@ void canonicalCodes(const uint8_t* lengths, int symbols, uint16_t* codes) {
 
 // A block's parse: each symbol is a literal byte (< 256) or a run, 256 + its length.
 struct Parse {
-    std::vector<uint16_t> symbols;
+    std::vector<uint16_t> symbols;  // `count` of them
+    size_t count = 0;
     uint32_t literalLengthFrequency[kLiteralLengthSymbols] = {};
     bool anyRun = false;
 };
@@ -183,28 +184,33 @@ inline size_t runLength(const uint8_t* input, size_t i, size_t end, uint8_t prev
     return j - i;
 }
 
-void parseBlock(const uint8_t* input, size_t begin, size_t end, int before, Parse& parse) {
-    parse.symbols.clear();
-    std::fill(std::begin(parse.literalLengthFrequency), std::end(parse.literalLengthFrequency), 0);
-    parse.anyRun = false;
-    size_t i = begin;
-    while (i < end) {
-        const int previous = i > 0 ? input[i - 1] : before;
-        if (previous >= 0 && input[i] == previous) {
-            const size_t run = runLength(input, i, end, uint8_t(previous));
+// `previous` is the byte before input[begin], or -1 where there is none.
+void parseBlock(const uint8_t* input, size_t begin, size_t end, int previous, Parse& parse) {
+    parse.symbols.resize(end - begin);
+    uint16_t* out = parse.symbols.data();
+    uint32_t* frequency = parse.literalLengthFrequency;
+    std::fill(frequency, frequency + kLiteralLengthSymbols, 0);
+    bool anyRun = false;
+    for (size_t i = begin; i < end;) {
+        const uint8_t byte = input[i];
+        if (byte == previous) {
+            const size_t run = runLength(input, i, end, byte);
             if (run >= kMinRun) {
-                parse.symbols.push_back(uint16_t(256 + run));
-                ++parse.literalLengthFrequency[257 + kLengthCodeOf[run]];
-                parse.anyRun = true;
+                *out++ = uint16_t(256 + run);
+                ++frequency[257 + kLengthCodeOf[run]];
+                anyRun = true;
                 i += run;
                 continue;
             }
         }
-        parse.symbols.push_back(input[i]);
-        ++parse.literalLengthFrequency[input[i]];
+        *out++ = byte;
+        ++frequency[byte];
+        previous = byte;
         ++i;
     }
-    ++parse.literalLengthFrequency[kEndOfBlock];
+    ++frequency[kEndOfBlock];
+    parse.count = size_t(out - parse.symbols.data());
+    parse.anyRun = anyRun;
 }
 
 // Writes one block: with its own Huffman codes, or stored where that is shorter.
@@ -313,9 +319,15 @@ void writeBlock(const uint8_t* input, size_t begin, size_t end, const Parse& par
                 uint8_t(literalLengths[symbol] + extraBits + distanceLength)};
         }
     }
-    for (uint16_t symbol : parse.symbols) {
+    // A literal's code and length in one word.
+    uint32_t literalWords[256];
+    for (int s = 0; s < 256; ++s)
+        literalWords[s] = uint32_t(literalCodes[s]) | uint32_t(literalLengths[s]) << 16;
+    for (size_t k = 0; k < parse.count; ++k) {
+        const uint16_t symbol = parse.symbols[k];
         if (symbol < 256) {
-            out.put(literalCodes[symbol], literalLengths[symbol]);
+            const uint32_t word = literalWords[symbol];
+            out.put(word & 0xffff, int(word >> 16));
         } else {
             const RunCode& run = runCodes[size_t(symbol - 256)];
             out.put(run.bits, run.count);  // the distance code 0 is the bit 0 above them
@@ -334,7 +346,6 @@ size_t deflateRunsBound(size_t size) {
 size_t deflateRuns(const uint8_t* input, size_t size, int before, bool last, uint8_t* out) {
     BitWriter writer(out);
     Parse parse;
-    parse.symbols.reserve(std::min(size, kBlockBytes) + 1);
     for (size_t begin = 0; begin < size; begin += kBlockBytes) {
         const size_t end = std::min(size, begin + kBlockBytes);
         parseBlock(input, begin, end, begin == 0 ? before : input[begin - 1], parse);
