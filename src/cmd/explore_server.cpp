@@ -105,7 +105,10 @@ void renderRoute(ExploreServer::State& state, const Request& request, Response& 
             return result.completed;
         });
         if (!done) return;
-        answerBytes(response, encodePng(result.image, scene.render.bitDepth), "image/png");
+        answerBytes(
+            response,
+            encodePng(result.image, scene.render.bitDepth, scene.render.alpha == AlphaMode::Opaque),
+            "image/png");
         response.set_header("X-Render-Ms", std::to_string(result.stats.seconds * 1000));
         if (download)
             response.set_header("Content-Disposition", "attachment; filename=\"quaternia.png\"");

@@ -73,7 +73,8 @@ int runRenderCommand(const RenderCommandOptions& options) {
     });
     if (!result.completed) return reportInterrupted();
 
-    auto png = encodePng(result.image, scene.render.bitDepth);
+    auto png =
+        encodePng(result.image, scene.render.bitDepth, scene.render.alpha == AlphaMode::Opaque);
     output.write(png.data(), png.size());
     output.commit();
     if (depthOutput) {

@@ -180,13 +180,13 @@ bool readFileBytes(const std::string& path, std::vector<uint8_t>& bytes, std::st
 
 }  // namespace
 
-std::vector<uint8_t> encodePng(const Image& image, int bitDepth) {
+std::vector<uint8_t> encodePng(const Image& image, int bitDepth, bool knownOpaque) {
     if (bitDepth != 8 && bitDepth != 16)
         throw std::invalid_argument("PNG bit depth must be 8 or 16, got " +
                                     std::to_string(bitDepth));
     // An alpha channel that is all maximum says nothing: RGB is a quarter less to compress and
     // decodes the same (opaque renders, plane images).
-    const bool opaque = alphaIsAllMax(image, bitDepth);
+    const bool opaque = knownOpaque || alphaIsAllMax(image, bitDepth);
     const PngFormat format{image.width(), image.height(), bitDepth,
                            opaque ? PngColorType::Rgb : PngColorType::Rgba};
     const size_t width = size_t(image.width());

@@ -17,8 +17,9 @@ namespace quaternia {
 // to [0, 1] (NaN counts as 0) and rounded: floor(v * 255 + 0.5), or floor(v * 65535 + 0.5).
 // The colour values are written as they are: they are display values already. When every
 // alpha rounds to the maximum, the file is RGB (colour type 2) instead: it decodes the same.
-// The bytes depend on the image alone, not on the number of cores.
-std::vector<uint8_t> encodePng(const Image& image, int bitDepth);
+// The bytes depend on the image alone, not on the number of cores. `opaque`: the caller knows
+// that every alpha is 1 (an opaque render), which spares the check over the whole image.
+std::vector<uint8_t> encodePng(const Image& image, int bitDepth, bool opaque = false);
 
 // One 16-bit gray channel, values clamped to [0, 1] and rounded as above.
 std::vector<uint8_t> encodeGrayPng16(const GrayImage& image);
