@@ -270,7 +270,9 @@ TEST(PngIo, RoundTripsEverySizeDepthAndAlphaExactly) {
                 Image image = testImage(size[0], size[1], opaque, seed++);
                 std::vector<uint8_t> png = encodePng(image, bits);
                 // A caller that knows the image is opaque gets the same file without the check.
-                if (opaque) EXPECT_EQ(encodePng(image, bits, /*opaque=*/true), png);
+                if (opaque) {
+                    EXPECT_EQ(encodePng(image, bits, /*opaque=*/true), png);
+                }
                 ASSERT_GT(png.size(), 33u);
                 EXPECT_EQ(png[24], bits) << "bit depth";
                 EXPECT_EQ(png[25], opaque ? 2 : 6) << "colour type";
