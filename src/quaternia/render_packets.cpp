@@ -315,6 +315,7 @@ void PacketTileRenderer::clipShadowRays(PacketTileStats& stats) {
     // A cylinder is clear from its far end to tOutside (to its end where it missed); on a ray,
     // that is from (far end - origin) . light - tOutside on.
     shadowClear_.assign(count, 0);
+    size_t cleared = 0;
     for (size_t c = 0; c < cylinders_.size(); ++c) {
         const TraceResult& result = cylinderResults_[c];
         const bool whole = result.end == TraceEnd::Miss && result.steps < march_.maxSteps;
@@ -324,12 +325,18 @@ void PacketTileRenderer::clipShadowRays(PacketTileStats& stats) {
             const double clearFrom = dot(farEnd - origin(r), light) - result.tOutside;
             if (whole || clearFrom <= 0) {
                 shadowClear_[r] = 1;
+                ++cleared;
             } else {
                 shadowRays_.tFar[r] = std::min(shadowRays_.tFar[r], clearFrom);
             }
         }
     }
-    // The batch to march: the rays not cleared whole, in their order.
+    // The batch to march: the rays not cleared whole, in their order. (A cylinder stops at the
+    // surface its rays start from, so most frames clear none: then the batch stays as it is.)
+    if (cleared == 0) {
+        shadowClear_.clear();
+        return;
+    }
     shadowRays_.removeFlagged(shadowClear_);
 }
 
