@@ -60,25 +60,29 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
             const double* blockRow =
                 blockStart_.data() + size_t((py - tile.y0) / kConeBlock * blocksAcross);
             const int rowBlock = (py - tile.y0) / kConeBlock * blocksAcross;
-            // One sample per pixel goes through the pixel centres, whose directions the row
-            // gives by additions (generateRay divides for each).
-            const Camera::RowDirections row = camera_.rowDirections(py);
+            if (samples_ == 1) {
+                rowRays(tile, py);
+            } else {
+                rowRays_.resize(size_t(width));
+                for (int px = tile.x0; px < tile.x1; ++px) {
+                    auto [sx, sy] = samplePosition(k, samples_, px, py);
+                    const Ray ray = camera_.generateRay(px + sx, py + sy);
+                    RowRay& r = rowRays_[size_t(px - tile.x0)];
+                    r.direction = ray.direction;
+                    auto interval = intersectSphere(ray, boundingRadius_);
+                    r.tNear = interval ? interval->tNear : 1;
+                    r.tFar = interval ? interval->tFar : -1;  // none: tNear > tFar
+                }
+            }
             for (int px = tile.x0; px < tile.x1; ++px) {
                 const int column = (px - tile.x0) / kConeBlock;
                 const double start = blockRow[column];
                 if (start == std::numeric_limits<double>::infinity()) continue;  // cone missed
-                Ray ray;
-                if (samples_ == 1) {
-                    ray = Ray{camera_.position(), normalize(row.first + row.step * double(px))};
-                } else {
-                    auto [sx, sy] = samplePosition(k, samples_, px, py);
-                    ray = camera_.generateRay(px + sx, py + sy);
-                }
-                auto interval = intersectSphere(ray, boundingRadius_);
-                if (!interval) continue;
-                const double near = std::max(interval->tNear, start);
-                if (near > interval->tFar) continue;  // the cone found nothing on this ray
-                rays_.push(ray, near, interval->tFar);
+                const RowRay& r = rowRays_[size_t(px - tile.x0)];
+                const double near = std::max(r.tNear, start);
+                // Not r.tNear <= r.tFar: the sphere missed, or the cone found nothing on it.
+                if (!(near <= r.tFar)) continue;
+                rays_.push(Ray{camera_.position(), r.direction}, near, r.tFar);
                 rayPixel_.push_back((py - tile.y0) * width + (px - tile.x0));
                 rayBlock_.push_back(rowBlock + column);
             }
@@ -104,6 +108,29 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
             pixel.depthSum += hits_[h].t;
             ++pixel.hits;
         }
+    }
+}
+
+void PacketTileRenderer::rowRays(const Tile& tile, int py) {
+    // The rays through the pixel centres of the row, as generateRay and intersectSphere give
+    // them (the same formulas in the same order), in loops without branches that the compiler
+    // vectorises: the square roots and divisions of a row overlap.
+    const int width = tile.x1 - tile.x0;
+    rowRays_.resize(size_t(width));
+    const Camera::RowDirections row = camera_.rowDirections(py);
+    const Point3d& o = camera_.position();
+    const double c = dot(o, o) - boundingRadius_ * boundingRadius_;
+    RowRay* out = rowRays_.data();
+    for (int i = 0; i < width; ++i) {
+        const Vector3d d = normalize(row.first + row.step * double(tile.x0 + i));
+        const double b = dot(o, d);
+        const double discriminant = b * b - c;
+        const double root = std::sqrt(std::max(0.0, discriminant));
+        const double tFar = -b + root;
+        out[i].direction = d;
+        out[i].tNear = std::max(0.0, -b - root);
+        // A miss (no real root, or the sphere behind the camera) as an empty interval.
+        out[i].tFar = discriminant < 0 || tFar < 0 ? -1.0 : tFar;
     }
 }
 

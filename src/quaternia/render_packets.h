@@ -46,6 +46,8 @@ class PacketTileRenderer {
     // start there; blockStart_ gets that t, or infinity where the whole block misses.
     static constexpr int kConeBlock = 4;
     void marchCones(const Tile& tile, PacketTileStats& stats);
+    // One sample per pixel: the rays through the centres of row py of the tile, in rowRays_.
+    void rowRays(const Tile& tile, int py);
     void shadeHits(PacketTileStats& stats);
     // Hard shadows: one cylinder about the shadow rays of each block of kConeBlock^2 pixels
     // with at least kMinCylinderRays of them shortens them to where it stopped, and leaves out
@@ -71,6 +73,13 @@ class PacketTileRenderer {
     std::vector<double> blockStart_;
     std::vector<Ray> coneCentres_;
 
+    // A row of the tile's rays (from the camera), and where each is inside the bounding sphere
+    // (tNear > tFar where it misses).
+    struct RowRay {
+        Vector3d direction;
+        double tNear, tFar;
+    };
+    std::vector<RowRay> rowRays_;
     // The batches of the current sample of the tile.
     RayBatch rays_;
     std::vector<int> rayPixel_;  // which pixel of the tile each ray belongs to
