@@ -60,6 +60,12 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
             const double* blockRow =
                 blockStart_.data() + size_t((py - tile.y0) / kConeBlock * blocksAcross);
             const int rowBlock = (py - tile.y0) / kConeBlock * blocksAcross;
+            // A row whose blocks' cones all missed has no ray to march.
+            if (std::all_of(blockRow, blockRow + blocksAcross, [](double start) {
+                    return start == std::numeric_limits<double>::infinity();
+                })) {
+                continue;
+            }
             if (samples_ == 1) {
                 rowRays(tile, py);
             } else {
