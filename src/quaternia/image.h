@@ -19,16 +19,11 @@ struct Rgba {
     friend bool operator==(const Rgba&, const Rgba&) = default;
 };
 
-// Zeroed memory for frames (zeroedAllocate in image.cpp): large blocks come from the kernel
-// already zero, in transparent huge pages where it allows them.
-void* zeroedAllocate(std::size_t bytes);
-void zeroedFree(void* p, std::size_t bytes);
-
-// Allocates zeroed memory and leaves it as it is where a vector would value-initialise its
-// elements (which for zero-initialised, implicit-lifetime T such as Rgba is the same bytes).
-// Why: a frame-sized vector<Rgba> is zeroed on one thread before the render starts (2 to 5 ms
-// at 1080p); memory the kernel maps fresh is zero already, so its pages are faulted in by the
-// threads that first write them, in parallel, and are still in cache then.
+// Allocates zeroed memory with calloc and leaves it as it is where a vector would value-
+// initialise its elements (which for zero-initialised, implicit-lifetime T such as Rgba is the
+// same bytes). Why: a frame-sized vector<Rgba> is zeroed on one thread before the render starts
+// (2 to 5 ms at 1080p); calloc gets large blocks from mmap already zero, so the pages are
+// faulted in by the threads that first write them, in parallel, and are still in cache then.
 template <class T>
 struct ZeroedAllocator {
     using value_type = T;
@@ -36,10 +31,10 @@ struct ZeroedAllocator {
     template <class U>
     ZeroedAllocator(const ZeroedAllocator<U>&) {}
     T* allocate(std::size_t n) {
-        if (n > std::size_t(-1) / sizeof(T)) throw std::bad_alloc();
-        return static_cast<T*>(zeroedAllocate(n * sizeof(T)));
+        if (void* p = std::calloc(n, sizeof(T))) return static_cast<T*>(p);
+        throw std::bad_alloc();
     }
-    void deallocate(T* p, std::size_t n) { zeroedFree(p, n * sizeof(T)); }
+    void deallocate(T* p, std::size_t) { std::free(p); }
     template <class U>
     void construct(U*) {}  // calloc's zero bytes are the value
     template <class U, class... Args>
