@@ -20,7 +20,7 @@ TEST(Image, IsRowMajorWithRowZeroAtTheTop) {
 }
 
 TEST(Image, FrameSizedImagesStartTransparentAndCopy) {
-    // 1280x720 float RGBA is 14 MB: a block of its own (zeroedAllocate), reused after a free.
+    // 1280x720 float RGBA is 14 MB: calloc maps it fresh (ZeroedAllocator), and again after a free.
     for (int round = 0; round < 2; ++round) {
         Image image(1280, 720);
         for (const Rgba& pixel : image.pixels())
