@@ -1,6 +1,6 @@
 // quaternia-explore: the server of `quaternia explore` (explore_command.h), which turns into
-// this program with its parsed options. The boundary, as in quaternia.cpp: user errors become
-// one line on standard error and exit code 2.
+// this program with its parsed options. The boundary is quaternia's (cli_boundary.h): user
+// errors become one line on standard error and exit code 2.
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli_boundary.h"
 #include "explore_command.h"
 #include "explore_server.h"
 #include "quaternia/parameters.h"
@@ -69,21 +70,6 @@ int main(int argc, char** argv) {
     CLI::App app("Quaternia's live explorer, started by `quaternia explore`.", "quaternia explore");
     ExploreCommandOptions options;
     addExploreOptions(app, options);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "quaternia: error: %s (see quaternia explore --help)\n", e.what());
-        return 2;
-    }
-    try {
-        return serveExplorer(options);
-    } catch (const UserError& e) {
-        std::fprintf(stderr, "quaternia: error: %s\n", e.what());
-        return 2;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "quaternia: internal error: %s\n", e.what());
-        return 1;
-    }
+    if (auto code = parseCommandLine(app, argc, argv, "quaternia explore")) return *code;
+    return runAtBoundary([&] { return serveExplorer(options); });
 }

@@ -1,10 +1,11 @@
-// quaternia: the command line. This is the boundary where user errors become one line on
-// standard error and exit code 2; the library below never prints and never exits.
+// quaternia: the command line. Its boundary (cli_boundary.h) is where user errors become one
+// line on standard error and exit code 2; the library below never prints and never exits.
 #include <cstdio>
 #include <exception>
 
 #include <CLI/CLI.hpp>
 
+#include "cli_boundary.h"
 #include "cycles_command.h"
 #include "explore_command.h"
 #include "mesh_command.h"
@@ -40,31 +41,14 @@ int main(int argc, char** argv) {
     addMeshCommand(app, meshOptions);
     ExploreCommandOptions exploreOptions;
     addExploreCommand(app, exploreOptions);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "quaternia: error: %s (see quaternia --help)\n", e.what());
-        return 2;
-    }
-    try {
+    if (auto code = parseCommandLine(app, argc, argv, "quaternia")) return *code;
+    return runAtBoundary([&] {
         if (app.got_subcommand("render")) return runRenderCommand(renderOptions);
         if (app.got_subcommand("orbit")) return runOrbitCommand(orbitOptions);
         if (app.got_subcommand("cycles")) return runCyclesCommand(cyclesOptions);
         if (app.got_subcommand("plane")) return runPlaneCommand(planeOptions);
         if (app.got_subcommand("mesh")) return runMeshCommand(meshOptions);
         if (app.got_subcommand("explore")) return runExploreCommand(exploreOptions);
-    } catch (const UserError& e) {
-        std::fprintf(stderr, "quaternia: error: %s\n", e.what());
-        return 2;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "quaternia: internal error: %s\n", e.what());
-        return 1;
-    }
-    return 0;
+        return 0;
+    });
 }

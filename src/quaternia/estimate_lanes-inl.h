@@ -151,6 +151,24 @@ HWY_INLINE V closingDistance(D d, V radiusSquared, V derivativeSquared, V stepSc
     return hn::Max(hn::Zero(d), distance) * stepScale;
 }
 
+// One group of lanes at z_0, whose |z_0|^2 is r2 (the radii squared in the loop's scale):
+// escaped at z_0, done (empty lanes, and escapes that are final: uncertain, or past the estimate
+// radius), and with N = 1 inside (the lanes not escaped).
+template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
+HWY_INLINE void startLanes(D d, V r2, M live, V bailoutSquared, V escapeRadiusSquared,
+                           V estimateRadiusSquared, int maxIterationCount, M& escaped, M& done,
+                           M& inside) {
+    escaped = hn::And(live, r2 > bailoutSquared);
+    // Escaped at z_0: final unless escape is certain and the estimate radius not reached.
+    const auto continues = hn::And(r2 > escapeRadiusSquared, r2 < estimateRadiusSquared);
+    done = hn::Or(hn::Not(live), hn::AndNot(continues, escaped));
+    inside = hn::FirstN(d, 0);
+    if (maxIterationCount <= 1) {
+        inside = hn::AndNot(escaped, live);
+        done = hn::Or(done, inside);
+    }
+}
+
 // The certified loops' bookkeeping after an iterate of one group of lanes, whose |z|^2 is r2
 // and |z'|^2 derivativeSquared: count its running lanes, stop those past stopRadius and, after
 // the N-th iterate (`last`), those still within insideRadius (inside K_N), keeping |z|^2 and
@@ -200,15 +218,8 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
     for (size_t j = 0; j < K; ++j) {
         r2[j] = normSquaredLanes(z[j]);
         derivativeSquared[j] = one;
-        escaped[j] = hn::And(live[j], r2[j] > k.bailoutSquared);
-        // Escaped at z_0: final unless escape is certain and the estimate radius not reached.
-        auto continues = hn::And(r2[j] > k.escapeRadiusSquared, r2[j] < k.estimateRadiusSquared);
-        done[j] = hn::Or(hn::Not(live[j]), hn::AndNot(continues, escaped[j]));
-        inside[j] = hn::FirstN(d, 0);
-        if (k.maxIterationCount <= 1) {
-            inside[j] = hn::AndNot(escaped[j], live[j]);
-            done[j] = hn::Or(done[j], inside[j]);
-        }
+        startLanes(d, r2[j], live[j], k.bailoutSquared, k.escapeRadiusSquared,
+                   k.estimateRadiusSquared, k.maxIterationCount, escaped[j], done[j], inside[j]);
         trap[j] = r2[j];
         stopIteration[j] = hn::Zero(d);
         allDone = allDone && hn::AllTrue(d, done[j]);
@@ -319,16 +330,9 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
         rest[j] = hn::MulAdd(b[j], b[j], rho[j]);
         r2[j] = aa[j] + rest[j];
         derivativeSquared[j] = one;
-        // Escaped at z_0: final unless the estimate radius is still ahead.
-        escaped[j] = hn::And(live[j], r2[j] > k.scaledBailoutSquared);
-        const auto continues =
-            hn::And(r2[j] > k.scaledEscapeRadiusSquared, r2[j] < k.scaledEstimateRadiusSquared);
-        done[j] = hn::Or(hn::Not(live[j]), hn::AndNot(continues, escaped[j]));
-        inside[j] = hn::FirstN(d, 0);
-        if (k.maxIterationCount <= 1) {
-            inside[j] = hn::AndNot(escaped[j], live[j]);
-            done[j] = hn::Or(done[j], inside[j]);
-        }
+        startLanes(d, r2[j], live[j], k.scaledBailoutSquared, k.scaledEscapeRadiusSquared,
+                   k.scaledEstimateRadiusSquared, k.maxIterationCount, escaped[j], done[j],
+                   inside[j]);
         trap[j] = r2[j];
         stopIteration[j] = hn::Zero(d);
         allDone = allDone && hn::AllTrue(d, done[j]);
