@@ -168,6 +168,8 @@ void FilterPaethRow(const uint8_t* HWY_RESTRICT row, const uint8_t* HWY_RESTRICT
     const size_t leftEdge = std::min(bytesPerPixel, rowBytes);
     for (size_t i = 0; i < leftEdge; ++i)
         out[i] = uint8_t(row[i] - previous[i]);
+    // A row of at most one pixel is done (and the loads below would start before it).
+    if (leftEdge == rowBytes) return;
     // Bytes [i, i + lanes) of a row at `r` above `p` into `o`.
     auto filterAt = [&](const uint8_t* r, const uint8_t* p, uint8_t* o, size_t i) {
         const auto a = hn::PromoteTo(d16, hn::LoadU(d8, r + i - bytesPerPixel));
