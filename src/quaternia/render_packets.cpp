@@ -119,8 +119,9 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
 
 void PacketTileRenderer::rowRays(const Tile& tile, int py) {
     // The rays through the pixel centres of the row, as generateRay and intersectSphere give
-    // them (the same formulas in the same order), in loops without branches that the compiler
-    // vectorises: the square roots and divisions of a row overlap.
+    // them (the same formulas in the same order), in one loop without branches: the square
+    // roots and divisions of neighbouring pixels overlap in the pipeline (GCC keeps them
+    // scalar; the branches between them were what cost).
     const int width = tile.x1 - tile.x0;
     rowRays_.resize(size_t(width));
     const Camera::RowDirections row = camera_.rowDirections(py);
