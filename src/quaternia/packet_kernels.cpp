@@ -285,6 +285,33 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
                                          });
 }
 
+// `hold(next, old)` for a single lane vector, as select() is for quaternions.
+template <class V, class M>
+HWY_INLINE V select(M mask, V yes, V no) {
+    return hn::IfThenElse(mask, yes, no);
+}
+
+// Calls iterate(hold) until lane i has done m_i iterates (m_i in the lanes of m; fewest and most
+// their least and greatest). `hold(next, old)` gives a lane's new value, or keeps the old one in
+// a lane that is done; while every lane still runs (most of the iterations, as the M of
+// neighbouring hits differ little), nothing needs holding.
+template <class D, class V, class Iterate>
+HWY_INLINE void iterateEachLaneItsCount(D d, V m, int fewest, int most, LaneCounters& counters,
+                                        const Iterate& iterate) {
+    const int64_t lanes = int64_t(hn::Lanes(d));
+    for (int iteration = 0; iteration < fewest; ++iteration) {
+        counters.laneIterations += lanes;
+        counters.laneSlots += lanes;
+        iterate([](const auto& next, const auto&) { return next; });
+    }
+    for (int iteration = fewest; iteration < most; ++iteration) {
+        const auto running = hn::Set(d, hn::TFromD<D>(iteration)) < m;
+        counters.laneIterations += int64_t(hn::CountTrue(d, running));
+        counters.laneSlots += lanes;
+        iterate([&](const auto& next, const auto& old) { return select(running, next, old); });
+    }
+}
+
 // potentialNormalLanes' gradient for float lanes of s z^2 + c, in the three numbers of
 // estimateThreeNumbers: u = 2 s z = A + B i + E (E in span{j, k}, P = |E|^2) maps to A' = (A^2 -
 // B^2 - P) / 2 + 2 s c.w, B' = A B + 2 s c.x, E' = A E. A tangent of the slice, dU, then needs
@@ -307,10 +334,8 @@ HWY_INLINE void threeNumberGradient(D d, const LaneConstants<D>& k, V x, V y, V 
     }
     const V half = hn::Set(d, T(0.5)), one = hn::Set(d, T(1));
     const V large = hn::Set(d, T(1e30)), shrink = hn::Set(d, T(1e-10));
-    const size_t lanes = hn::Lanes(d);
-    V n = hn::Zero(d);
-    // One iterate; `hold(next, old)` keeps the old value in lanes that have done their M.
-    auto iterate = [&](const auto& hold) {
+    // One iterate (iterateEachLaneItsCount's `hold`).
+    iterateEachLaneItsCount(d, m, fewest, most, counters, [&](const auto& hold) {
         const V aa = a * a;
         for (int i = 0; i < 3; ++i) {
             const V nextA = hn::MulSub(a, dA[i], hn::MulAdd(b, dB[i], dR[i]));
@@ -322,7 +347,6 @@ HWY_INLINE void threeNumberGradient(D d, const LaneConstants<D>& k, V x, V y, V 
         const V nextB = hn::MulAdd(a, b, k.scaledCi);
         const V nextP = aa * p;
         a = hold(nextA, a), b = hold(nextB, b), p = hold(nextP, p);
-        n = n + one;
         // Only the direction matters: rescale the tangents together before they overflow.
         V largest = hn::Zero(d);
         for (int i = 0; i < 3; ++i)
@@ -334,39 +358,68 @@ HWY_INLINE void threeNumberGradient(D d, const LaneConstants<D>& k, V x, V y, V 
             for (int i = 0; i < 3; ++i)
                 dA[i] = dA[i] * factor, dB[i] = dB[i] * factor, dR[i] = dR[i] * factor;
         }
-    };
-    for (int iteration = 0; iteration < fewest; ++iteration) {
-        counters.laneIterations += int64_t(lanes);
-        counters.laneSlots += int64_t(lanes);
-        iterate([](V next, V) { return next; });
-    }
-    for (int iteration = fewest; iteration < most; ++iteration) {
-        const auto running = n < m;
-        counters.laneIterations += int64_t(hn::CountTrue(d, running));
-        counters.laneSlots += int64_t(lanes);
-        iterate([&](V next, V old) { return hn::IfThenElse(running, next, old); });
-    }
+    });
     gx = hn::MulAdd(a, dA[0], hn::MulAdd(b, dB[0], dR[0]));
     gy = hn::MulAdd(a, dA[1], hn::MulAdd(b, dB[1], dR[1]));
     gz = hn::MulAdd(a, dA[2], hn::MulAdd(b, dB[2], dR[2]));
 }
 
-// Fractal::normal / JuliaSet::potentialGradient for a batch of points: the three tangents of
-// the slice carried through the Jacobian of p at each iterate (the chain rule), M_i iterations
-// in lane i.
+// potentialNormalLanes' gradient in quaternions, for any s z^d + c in float or double: the
+// three tangents of the slice carried through the Jacobian of p at each iterate (the chain
+// rule), and their inner products with z_M.
+template <bool kQuadratic, class D, class V = hn::Vec<D>>
+HWY_INLINE void quaternionGradient(D d, const LaneConstants<D>& k, V x, V y, V z0, V m, int fewest,
+                                   int most, V& gx, V& gy, V& gz, LaneCounters& counters) {
+    using T = hn::TFromD<D>;
+    constexpr T kLarge = sizeof(T) == 4 ? T(1e30) : T(1e200);
+    constexpr T kShrink = sizeof(T) == 4 ? T(1e-10) : T(1e-100);
+    const V one = hn::Set(d, T(1));
+    // Only the direction matters: rescale all three together before they overflow.
+    auto rescale = [&](QuaternionLanes<V>& t0, QuaternionLanes<V>& t1, QuaternionLanes<V>& t2) {
+        V largest =
+            hn::Max(normSquaredLanes(t0), hn::Max(normSquaredLanes(t1), normSquaredLanes(t2)));
+        auto huge = largest > hn::Set(d, kLarge);
+        if (!hn::AllFalse(d, huge)) {
+            const V factor = hn::IfThenElse(huge, hn::Set(d, kShrink), one);
+            t0 = {t0.w * factor, t0.x * factor, t0.y * factor, t0.z * factor};
+            t1 = {t1.w * factor, t1.x * factor, t1.y * factor, t1.z * factor};
+            t2 = {t2.w * factor, t2.x * factor, t2.y * factor, t2.z * factor};
+        }
+    };
+    auto z = k.quaternionFromWorld(x, y, z0);
+    QuaternionLanes<V> t0 = k.axis0, t1 = k.axis1, t2 = k.axis2;
+    // One iteration of the point and the tangents (iterateEachLaneItsCount's `hold`).
+    iterateEachLaneItsCount(d, m, fewest, most, counters, [&](const auto& hold) {
+        QuaternionLanes<V> n0, n1, n2, nz;
+        if constexpr (kQuadratic) {
+            n0 = quadraticDerivativeLanes(z, t0, k.scale);
+            n1 = quadraticDerivativeLanes(z, t1, k.scale);
+            n2 = quadraticDerivativeLanes(z, t2, k.scale);
+            nz = quadraticStepLanes(z, k.scale, k.c);
+        } else {
+            n0 = powerDerivativeLanes(z, t0, k.degree, k.scale);
+            n1 = powerDerivativeLanes(z, t1, k.degree, k.scale);
+            n2 = powerDerivativeLanes(z, t2, k.degree, k.scale);
+            nz = powerStepLanes(z, k.degree, k.scale, k.c);
+        }
+        t0 = hold(n0, t0), t1 = hold(n1, t1), t2 = hold(n2, t2), z = hold(nz, z);
+        rescale(t0, t1, t2);
+    });
+    gx = dotLanes(z, t0), gy = dotLanes(z, t1), gz = dotLanes(z, t2);
+}
+
+// Fractal::normal / JuliaSet::potentialGradient for a batch of points, M_i iterations in lane i:
+// the gradient of the potential along the slice's axes, then the outward unit normal.
 template <bool kQuadratic, class D>
 void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& points,
                           const std::vector<int>& iterations, std::vector<Vector3d>& normals,
                           LaneCounters& counters) {
     using V = hn::Vec<D>;
     using T = hn::TFromD<D>;
-    constexpr T kLarge = sizeof(T) == 4 ? T(1e30) : T(1e200);
-    constexpr T kShrink = sizeof(T) == 4 ? T(1e-10) : T(1e-100);
     const LaneConstants<D> k(d, fractal);
     const size_t lanes = hn::Lanes(d);
     normals.assign(points.size(), Vector3d());
     LaneScratch<T> in, out;
-    const V one = hn::Set(d, T(1));
     for (size_t begin = 0; begin < points.size(); begin += lanes) {
         size_t count = std::min(lanes, points.size() - begin);
         in.gather(points, begin, count);
@@ -378,72 +431,18 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
         }
         const V m = hn::Load(d, in.kind);
         const int fewest = int(hn::GetLane(hn::MinOfLanes(d, m)));
+        V gx, gy, gz;  // the gradient along the slice's axes
         if constexpr (kQuadratic && sizeof(T) == 4) {
-            V gx, gy, gz;
             threeNumberGradient(d, k, hn::Load(d, in.a), hn::Load(d, in.b), hn::Load(d, in.c), m,
                                 fewest, most, gx, gy, gz, counters);
-            hn::Store(gx, d, out.a);
-            hn::Store(gy, d, out.b);
-            hn::Store(gz, d, out.c);
-            for (size_t lane = 0; lane < count; ++lane) {
-                Vector3d g(out.a[lane], out.b[lane], out.c[lane]);
-                Point3d p(points.x[begin + lane], points.y[begin + lane], points.z[begin + lane]);
-                normals[begin + lane] = normalOrOutward(g, p);
-            }
-            continue;
+        } else {
+            quaternionGradient<kQuadratic>(d, k, hn::Load(d, in.a), hn::Load(d, in.b),
+                                           hn::Load(d, in.c), m, fewest, most, gx, gy, gz,
+                                           counters);
         }
-        // Only the direction matters: rescale all three together before they overflow.
-        auto rescale = [&](QuaternionLanes<V>& t0, QuaternionLanes<V>& t1, QuaternionLanes<V>& t2) {
-            V largest =
-                hn::Max(normSquaredLanes(t0), hn::Max(normSquaredLanes(t1), normSquaredLanes(t2)));
-            auto huge = largest > hn::Set(d, kLarge);
-            if (!hn::AllFalse(d, huge)) {
-                const V factor = hn::IfThenElse(huge, hn::Set(d, kShrink), one);
-                t0 = {t0.w * factor, t0.x * factor, t0.y * factor, t0.z * factor};
-                t1 = {t1.w * factor, t1.x * factor, t1.y * factor, t1.z * factor};
-                t2 = {t2.w * factor, t2.x * factor, t2.y * factor, t2.z * factor};
-            }
-        };
-        auto z = k.quaternionFromWorld(hn::Load(d, in.a), hn::Load(d, in.b), hn::Load(d, in.c));
-        QuaternionLanes<V> t0 = k.axis0, t1 = k.axis1, t2 = k.axis2;
-        V n = hn::Zero(d);
-        // One iteration of the point and the tangents; `hold(next, old)` gives each lane's new
-        // value, or keeps the old one in a lane that has done its M iterations.
-        auto iterate = [&](const auto& hold) {
-            QuaternionLanes<V> n0, n1, n2, nz;
-            if constexpr (kQuadratic) {
-                n0 = quadraticDerivativeLanes(z, t0, k.scale);
-                n1 = quadraticDerivativeLanes(z, t1, k.scale);
-                n2 = quadraticDerivativeLanes(z, t2, k.scale);
-                nz = quadraticStepLanes(z, k.scale, k.c);
-            } else {
-                n0 = powerDerivativeLanes(z, t0, k.degree, k.scale);
-                n1 = powerDerivativeLanes(z, t1, k.degree, k.scale);
-                n2 = powerDerivativeLanes(z, t2, k.degree, k.scale);
-                nz = powerStepLanes(z, k.degree, k.scale, k.c);
-            }
-            t0 = hold(n0, t0), t1 = hold(n1, t1), t2 = hold(n2, t2), z = hold(nz, z);
-            n = n + one;
-            rescale(t0, t1, t2);
-        };
-        // Lanes have their own M; while every lane still runs (most of the iterations, as the
-        // M of neighbouring hits differ little), nothing needs holding.
-        for (int iteration = 0; iteration < fewest; ++iteration) {
-            counters.laneIterations += int64_t(lanes);
-            counters.laneSlots += int64_t(lanes);
-            iterate([](const QuaternionLanes<V>& next, const QuaternionLanes<V>&) { return next; });
-        }
-        for (int iteration = fewest; iteration < most; ++iteration) {
-            const auto running = n < m;
-            counters.laneIterations += int64_t(hn::CountTrue(d, running));
-            counters.laneSlots += int64_t(lanes);
-            iterate([&](const QuaternionLanes<V>& next, const QuaternionLanes<V>& old) {
-                return select(running, next, old);
-            });
-        }
-        hn::Store(dotLanes(z, t0), d, out.a);
-        hn::Store(dotLanes(z, t1), d, out.b);
-        hn::Store(dotLanes(z, t2), d, out.c);
+        hn::Store(gx, d, out.a);
+        hn::Store(gy, d, out.b);
+        hn::Store(gz, d, out.c);
         for (size_t lane = 0; lane < count; ++lane) {
             Vector3d g(out.a[lane], out.b[lane], out.c[lane]);
             Point3d p(points.x[begin + lane], points.y[begin + lane], points.z[begin + lane]);
@@ -451,7 +450,6 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
         }
     }
 }
-
 // Calls kernel(d, quadratic) with the fractal's precision as the lane tag and its form as a
 // std::bool_constant: each kernel in both precisions and both forms, chosen at run time.
 template <class Kernel>

@@ -168,6 +168,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         stats.shadingEstimates += tileStats.shading.estimates;
         stats.laneIterations += tileStats.camera.laneIterations + tileStats.shading.laneIterations;
         stats.laneSlots += tileStats.camera.laneSlots + tileStats.shading.laneSlots;
+        stats.rays += int64_t(samples) * int64_t(thread.pixels.size());
         const int width = tile.x1 - tile.x0;
         const PixelSamples* pixel = thread.pixels.data();
         if (uniformBackground) {
@@ -190,7 +191,6 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
                 }
                 pixel += width;
             }
-            stats.rays += int64_t(samples) * int64_t(thread.pixels.size());
             return;
         }
         // Each row of the tile: the background first (float, vectorised), which is what a pixel
@@ -208,7 +208,6 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             // Rgba is four floats: the row's colour channels encode in place, alpha kept.
             shader.toDisplay(row, size_t(width));
         }
-        stats.rays += int64_t(samples) * int64_t(thread.pixels.size());
     };
 
     auto start = std::chrono::steady_clock::now();
