@@ -67,7 +67,7 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
                 continue;
             }
             if (samples_ == 1) {
-                rowRays(tile, py);
+                rowRays(tile, py, blockRow);
             } else {
                 rowRays_.resize(size_t(width));
                 for (int px = tile.x0; px < tile.x1; ++px) {
@@ -117,27 +117,40 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
     }
 }
 
-void PacketTileRenderer::rowRays(const Tile& tile, int py) {
+void PacketTileRenderer::rowRays(const Tile& tile, int py, const double* blockStart) {
     // The rays through the pixel centres of the row, as generateRay and intersectSphere give
-    // them (the same formulas in the same order), in one loop without branches: the square
-    // roots and divisions of neighbouring pixels overlap in the pipeline (GCC keeps them
-    // scalar; the branches between them were what cost).
+    // them (the same formulas in the same order), for the pixels of the blocks whose cones did
+    // not miss: each run of such blocks in one loop without branches (the square roots and
+    // divisions of neighbouring pixels overlap in the pipeline; GCC keeps them scalar, and the
+    // branches between them were what cost).
     const int width = tile.x1 - tile.x0;
+    const int blocks = (width + kConeBlock - 1) / kConeBlock;
     rowRays_.resize(size_t(width));
     const Camera::RowDirections row = camera_.rowDirections(py);
     const Point3d& o = camera_.position();
     const double c = dot(o, o) - boundingRadius_ * boundingRadius_;
     RowRay* out = rowRays_.data();
-    for (int i = 0; i < width; ++i) {
-        const Vector3d d = normalize(row.first + row.step * double(tile.x0 + i));
-        const double b = dot(o, d);
-        const double discriminant = b * b - c;
-        const double root = std::sqrt(std::max(0.0, discriminant));
-        const double tFar = -b + root;
-        out[i].direction = d;
-        out[i].tNear = std::max(0.0, -b - root);
-        // A miss (no real root, or the sphere behind the camera) as an empty interval.
-        out[i].tFar = discriminant < 0 || tFar < 0 ? -1.0 : tFar;
+    constexpr double kMissed = std::numeric_limits<double>::infinity();
+    for (int block = 0; block < blocks;) {
+        if (blockStart[block] == kMissed) {
+            ++block;
+            continue;
+        }
+        const int first = block * kConeBlock;
+        while (block < blocks && blockStart[block] != kMissed)
+            ++block;
+        const int end = std::min(width, block * kConeBlock);
+        for (int i = first; i < end; ++i) {
+            const Vector3d d = normalize(row.first + row.step * double(tile.x0 + i));
+            const double b = dot(o, d);
+            const double discriminant = b * b - c;
+            const double root = std::sqrt(std::max(0.0, discriminant));
+            const double tFar = -b + root;
+            out[i].direction = d;
+            out[i].tNear = std::max(0.0, -b - root);
+            // A miss (no real root, or the sphere behind the camera) as an empty interval.
+            out[i].tFar = discriminant < 0 || tFar < 0 ? -1.0 : tFar;
+        }
     }
 }
 

@@ -46,8 +46,9 @@ class PacketTileRenderer {
     // start there; blockStart_ gets that t, or infinity where the whole block misses.
     static constexpr int kConeBlock = 4;
     void marchCones(const Tile& tile, PacketTileStats& stats);
-    // One sample per pixel: the rays through the centres of row py of the tile, in rowRays_.
-    void rowRays(const Tile& tile, int py);
+    // One sample per pixel: the rays through the centres of row py of the tile, in rowRays_,
+    // for the pixels of the blocks whose start (blockStart_, the row's blocks) is finite.
+    void rowRays(const Tile& tile, int py, const double* blockStart);
     void shadeHits(PacketTileStats& stats);
     // Hard shadows: one cylinder about the shadow rays of each block of kConeBlock^2 pixels
     // with at least kMinCylinderRays of them shortens them to where it stopped, and leaves out
