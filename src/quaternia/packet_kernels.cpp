@@ -27,6 +27,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 #include "quaternia/julia_lanes-inl.h"
 // After the formulas it uses:
 #include "quaternia/estimate_lanes-inl.h"
+#include "quaternia/gradient_lanes-inl.h"
 
 // The mask as bits, lane i at bit i (at most 64 lanes: kLaneGroups vectors of 16 floats).
 template <class D>
@@ -285,134 +286,13 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
                                          });
 }
 
-// `hold(next, old)` for a single lane vector, as select() is for quaternions.
-template <class V, class M>
-HWY_INLINE V select(M mask, V yes, V no) {
-    return hn::IfThenElse(mask, yes, no);
-}
-
-// Calls iterate(hold) until lane i has done m_i iterates (m_i in the lanes of m; fewest and most
-// their least and greatest). `hold(next, old)` gives a lane's new value, or keeps the old one in
-// a lane that is done; while every lane still runs (most of the iterations, as the M of
-// neighbouring hits differ little), nothing needs holding.
-template <class D, class V, class Iterate>
-HWY_INLINE void iterateEachLaneItsCount(D d, V m, int fewest, int most, LaneCounters& counters,
-                                        const Iterate& iterate) {
-    const int64_t lanes = int64_t(hn::Lanes(d));
-    for (int iteration = 0; iteration < fewest; ++iteration) {
-        counters.laneIterations += lanes;
-        counters.laneSlots += lanes;
-        iterate([](const auto& next, const auto&) { return next; });
-    }
-    for (int iteration = fewest; iteration < most; ++iteration) {
-        const auto running = hn::Set(d, hn::TFromD<D>(iteration)) < m;
-        counters.laneIterations += int64_t(hn::CountTrue(d, running));
-        counters.laneSlots += lanes;
-        iterate([&](const auto& next, const auto& old) { return select(running, next, old); });
-    }
-}
-
-// potentialNormalLanes' gradient for float lanes of s z^2 + c, in the three numbers of
-// estimateThreeNumbers: u = 2 s z = A + B i + E (E in span{j, k}, P = |E|^2) maps to A' = (A^2 -
-// B^2 - P) / 2 + 2 s c.w, B' = A B + 2 s c.x, E' = A E. A tangent of the slice, dU, then needs
-// dA, dB and dR = E . dE alone: dA' = A dA - B dB - dR, dB' = A dB + B dA, dR' = E' . dE' =
-// A (P dA + A dR) (from dE' = dA E + A dE), and u . dU = A dA + B dB + dR is the gradient of
-// |u|^2 / 2, 4 s^2 times that of |z|^2 / 2: the same direction. 27 operations per iterate with
-// the three tangents instead of about 50. `m` holds each lane's M; the gradient's components
-// along the slice's axes go to gx, gy, gz.
-template <class D, class V = hn::Vec<D>>
-HWY_INLINE void threeNumberGradient(D d, const LaneConstants<D>& k, V x, V y, V z, V m, int fewest,
-                                    int most, V& gx, V& gy, V& gz, LaneCounters& counters) {
-    using T = hn::TFromD<D>;
-    const QuaternionLanes<V> u = k.loopFromWorld(x, y, z);
-    V a = u.w, b = u.x, p = hn::MulAdd(u.z, u.z, u.y * u.y);
-    V dA[3], dB[3], dR[3];
-    const QuaternionLanes<V>* axes[3] = {&k.loopAxis0, &k.loopAxis1, &k.loopAxis2};
-    for (int i = 0; i < 3; ++i) {
-        dA[i] = axes[i]->w, dB[i] = axes[i]->x;
-        dR[i] = hn::MulAdd(u.z, axes[i]->z, u.y * axes[i]->y);
-    }
-    const V half = hn::Set(d, T(0.5)), one = hn::Set(d, T(1));
-    const V large = hn::Set(d, T(1e30)), shrink = hn::Set(d, T(1e-10));
-    // One iterate (iterateEachLaneItsCount's `hold`).
-    iterateEachLaneItsCount(d, m, fewest, most, counters, [&](const auto& hold) {
-        const V aa = a * a;
-        for (int i = 0; i < 3; ++i) {
-            const V nextA = hn::MulSub(a, dA[i], hn::MulAdd(b, dB[i], dR[i]));
-            const V nextB = hn::MulAdd(a, dB[i], b * dA[i]);
-            const V nextR = a * hn::MulAdd(p, dA[i], a * dR[i]);
-            dA[i] = hold(nextA, dA[i]), dB[i] = hold(nextB, dB[i]), dR[i] = hold(nextR, dR[i]);
-        }
-        const V nextA = hn::MulAdd(half, aa - hn::MulAdd(b, b, p), k.scaledC);
-        const V nextB = hn::MulAdd(a, b, k.scaledCi);
-        const V nextP = aa * p;
-        a = hold(nextA, a), b = hold(nextB, b), p = hold(nextP, p);
-        // Only the direction matters: rescale the tangents together before they overflow.
-        V largest = hn::Zero(d);
-        for (int i = 0; i < 3; ++i)
-            largest =
-                hn::Max(largest, hn::Max(hn::Abs(dA[i]), hn::Max(hn::Abs(dB[i]), hn::Abs(dR[i]))));
-        const auto huge = largest > large;
-        if (!hn::AllFalse(d, huge)) {
-            const V factor = hn::IfThenElse(huge, shrink, one);
-            for (int i = 0; i < 3; ++i)
-                dA[i] = dA[i] * factor, dB[i] = dB[i] * factor, dR[i] = dR[i] * factor;
-        }
-    });
-    gx = hn::MulAdd(a, dA[0], hn::MulAdd(b, dB[0], dR[0]));
-    gy = hn::MulAdd(a, dA[1], hn::MulAdd(b, dB[1], dR[1]));
-    gz = hn::MulAdd(a, dA[2], hn::MulAdd(b, dB[2], dR[2]));
-}
-
-// potentialNormalLanes' gradient in quaternions, for any s z^d + c in float or double: the
-// three tangents of the slice carried through the Jacobian of p at each iterate (the chain
-// rule), and their inner products with z_M.
-template <bool kQuadratic, class D, class V = hn::Vec<D>>
-HWY_INLINE void quaternionGradient(D d, const LaneConstants<D>& k, V x, V y, V z0, V m, int fewest,
-                                   int most, V& gx, V& gy, V& gz, LaneCounters& counters) {
-    using T = hn::TFromD<D>;
-    constexpr T kLarge = sizeof(T) == 4 ? T(1e30) : T(1e200);
-    constexpr T kShrink = sizeof(T) == 4 ? T(1e-10) : T(1e-100);
-    const V one = hn::Set(d, T(1));
-    // Only the direction matters: rescale all three together before they overflow.
-    auto rescale = [&](QuaternionLanes<V>& t0, QuaternionLanes<V>& t1, QuaternionLanes<V>& t2) {
-        V largest =
-            hn::Max(normSquaredLanes(t0), hn::Max(normSquaredLanes(t1), normSquaredLanes(t2)));
-        auto huge = largest > hn::Set(d, kLarge);
-        if (!hn::AllFalse(d, huge)) {
-            const V factor = hn::IfThenElse(huge, hn::Set(d, kShrink), one);
-            t0 = {t0.w * factor, t0.x * factor, t0.y * factor, t0.z * factor};
-            t1 = {t1.w * factor, t1.x * factor, t1.y * factor, t1.z * factor};
-            t2 = {t2.w * factor, t2.x * factor, t2.y * factor, t2.z * factor};
-        }
-    };
-    auto z = k.quaternionFromWorld(x, y, z0);
-    QuaternionLanes<V> t0 = k.axis0, t1 = k.axis1, t2 = k.axis2;
-    // One iteration of the point and the tangents (iterateEachLaneItsCount's `hold`).
-    iterateEachLaneItsCount(d, m, fewest, most, counters, [&](const auto& hold) {
-        QuaternionLanes<V> n0, n1, n2, nz;
-        if constexpr (kQuadratic) {
-            n0 = quadraticDerivativeLanes(z, t0, k.scale);
-            n1 = quadraticDerivativeLanes(z, t1, k.scale);
-            n2 = quadraticDerivativeLanes(z, t2, k.scale);
-            nz = quadraticStepLanes(z, k.scale, k.c);
-        } else {
-            n0 = powerDerivativeLanes(z, t0, k.degree, k.scale);
-            n1 = powerDerivativeLanes(z, t1, k.degree, k.scale);
-            n2 = powerDerivativeLanes(z, t2, k.degree, k.scale);
-            nz = powerStepLanes(z, k.degree, k.scale, k.c);
-        }
-        t0 = hold(n0, t0), t1 = hold(n1, t1), t2 = hold(n2, t2), z = hold(nz, z);
-        rescale(t0, t1, t2);
-    });
-    gx = dotLanes(z, t0), gy = dotLanes(z, t1), gz = dotLanes(z, t2);
-}
-
-// Fractal::normal / JuliaSet::potentialGradient for a batch of points, M_i iterations in lane i:
-// the gradient of the potential along the slice's axes, then the outward unit normal.
+// Fractal::normal / JuliaSet::potentialGradient for a batch of points, M_i iterations in lane i
+// (iterations[i]; without `iterations`, the M that each point's estimate reaches, found on the
+// way: float lanes of z^2 + c with a certified bailout only, LaneConstants::threeNumbers): the
+// gradient of the potential along the slice's axes, then the outward unit normal.
 template <bool kQuadratic, class D>
 void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& points,
-                          const std::vector<int>& iterations, std::vector<Vector3d>& normals,
+                          const std::vector<int>* iterations, std::vector<Vector3d>& normals,
                           LaneCounters& counters) {
     using V = hn::Vec<D>;
     using T = hn::TFromD<D>;
@@ -423,22 +303,28 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
     for (size_t begin = 0; begin < points.size(); begin += lanes) {
         size_t count = std::min(lanes, points.size() - begin);
         in.gather(points, begin, count);
-        int most = 0;
-        for (size_t lane = 0; lane < lanes; ++lane) {
-            int m = lane < count ? iterations[begin + lane] : 0;
-            in.kind[lane] = T(m);
-            most = std::max(most, m);
-        }
-        const V m = hn::Load(d, in.kind);
-        const int fewest = int(hn::GetLane(hn::MinOfLanes(d, m)));
+        const V x = hn::Load(d, in.a), y = hn::Load(d, in.b), z = hn::Load(d, in.c);
         V gx, gy, gz;  // the gradient along the slice's axes
-        if constexpr (kQuadratic && sizeof(T) == 4) {
-            threeNumberGradient(d, k, hn::Load(d, in.a), hn::Load(d, in.b), hn::Load(d, in.c), m,
-                                fewest, most, gx, gy, gz, counters);
+        if (!iterations) {
+            if constexpr (kQuadratic && sizeof(T) == 4) {
+                threeNumberGradientToItsCount(d, k, x, y, z, hn::FirstN(d, count), gx, gy, gz,
+                                              counters);
+            }
         } else {
-            quaternionGradient<kQuadratic>(d, k, hn::Load(d, in.a), hn::Load(d, in.b),
-                                           hn::Load(d, in.c), m, fewest, most, gx, gy, gz,
-                                           counters);
+            int most = 0;
+            for (size_t lane = 0; lane < lanes; ++lane) {
+                int m = lane < count ? (*iterations)[begin + lane] : 0;
+                in.kind[lane] = T(m);
+                most = std::max(most, m);
+            }
+            const V m = hn::Load(d, in.kind);
+            const int fewest = int(hn::GetLane(hn::MinOfLanes(d, m)));
+            if constexpr (kQuadratic && sizeof(T) == 4) {
+                threeNumberGradient(d, k, x, y, z, m, fewest, most, gx, gy, gz, counters);
+            } else {
+                quaternionGradient<kQuadratic>(d, k, x, y, z, m, fewest, most, gx, gy, gz,
+                                               counters);
+            }
         }
         hn::Store(gx, d, out.a);
         hn::Store(gy, d, out.b);
@@ -450,6 +336,7 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
         }
     }
 }
+
 // Calls kernel(d, quadratic) with the fractal's precision as the lane tag and its form as a
 // std::bool_constant: each kernel in both precisions and both forms, chosen at run time.
 template <class Kernel>
@@ -500,7 +387,25 @@ void PotentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       const std::vector<int>& iterations, std::vector<Vector3d>& normals,
                       LaneCounters& counters) {
     run(fractal, [&](auto d, auto quadratic) {
-        potentialNormalLanes<quadratic()>(d, fractal, points, iterations, normals, counters);
+        potentialNormalLanes<quadratic()>(d, fractal, points, &iterations, normals, counters);
+    });
+}
+void PotentialNormalsAlone(const LaneFractal& fractal, const PointBatch& points,
+                           std::vector<Vector3d>& normals, LaneCounters& counters) {
+    run(fractal, [&](auto d, auto quadratic) {
+        if constexpr (quadratic() && sizeof(hn::TFromD<decltype(d)>) == 4) {
+            if (LaneConstants<decltype(d)>(d, fractal).threeNumbers) {
+                potentialNormalLanes<true>(d, fractal, points, nullptr, normals, counters);
+                return;
+            }
+        }
+        // Elsewhere the counts come from the estimates.
+        std::vector<PointEstimate> estimates;
+        estimatePointLanes<quadratic()>(d, fractal, points, estimates, counters);
+        std::vector<int> iterations(points.size());
+        for (size_t i = 0; i < points.size(); ++i)
+            iterations[i] = gradientIterationsOf(estimates[i], fractal.maxIterations);
+        potentialNormalLanes<quadratic()>(d, fractal, points, &iterations, normals, counters);
     });
 }
 const char* TargetName() {
@@ -519,6 +424,7 @@ HWY_EXPORT(TraceShadowRays);
 HWY_EXPORT(EstimatePoints);
 HWY_EXPORT(EstimateDistances);
 HWY_EXPORT(PotentialNormals);
+HWY_EXPORT(PotentialNormalsAlone);
 HWY_EXPORT(TargetName);
 
 void traceCameraRays(const LaneFractal& fractal, const CameraMarch& march, const RayBatch& rays,
@@ -541,6 +447,10 @@ void potentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       const std::vector<int>& iterations, std::vector<Vector3d>& normals,
                       LaneCounters& counters) {
     HWY_DYNAMIC_DISPATCH(PotentialNormals)(fractal, points, iterations, normals, counters);
+}
+void potentialNormalsAlone(const LaneFractal& fractal, const PointBatch& points,
+                           std::vector<Vector3d>& normals, LaneCounters& counters) {
+    HWY_DYNAMIC_DISPATCH(PotentialNormalsAlone)(fractal, points, normals, counters);
 }
 const char* laneTargetName() {
     return HWY_DYNAMIC_DISPATCH(TargetName)();

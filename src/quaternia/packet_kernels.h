@@ -138,11 +138,21 @@ void estimatePoints(const LaneFractal& fractal, const PointBatch& points,
 void estimateDistances(const LaneFractal& fractal, const PointBatch& points,
                        std::vector<double>& distances, LaneCounters& counters);
 
-// Unit outward normals from the analytic gradient of |z_M|^2 (Fractal::normal), M = the
-// iterations of each point's estimate (maxIterations - 1 for points inside).
+// The M of a point's analytic normal (JuliaSet::gradientIterations): the iterations of its
+// estimate, maxIterations - 1 for points inside.
+inline int gradientIterationsOf(const PointEstimate& estimate, int maxIterations) {
+    return estimate.inside ? maxIterations - 1 : estimate.iterations;
+}
+// Unit outward normals from the analytic gradient of |z_M|^2 (Fractal::normal), M given per
+// point (gradientIterationsOf its estimate).
 void potentialNormals(const LaneFractal& fractal, const PointBatch& points,
                       const std::vector<int>& iterations, std::vector<Vector3d>& normals,
                       LaneCounters& counters);
+// The same normals for shading that needs nothing else of the estimates (no orbit colouring):
+// where the lanes iterate z^2 + c in three numbers (float, certified bailout), the gradient's
+// own iterates stop where the estimate would, and no estimate is taken.
+void potentialNormalsAlone(const LaneFractal& fractal, const PointBatch& points,
+                           std::vector<Vector3d>& normals, LaneCounters& counters);
 
 // The SIMD target the dispatcher chose on this CPU, e.g. "AVX2".
 const char* laneTargetName();

@@ -213,6 +213,51 @@ TEST(PacketKernels, NormalsMatchTheAnalyticNormal) {
     }
 }
 
+// Normals alone (shading without orbit colouring) find each point's M as its estimate does: the
+// same normals, bit for bit, as from the estimates' counts, in the three-number lanes (float,
+// z^2 + c, certified bailout) and where the counts still come from estimates (double lanes,
+// z^3 + c, an uncertified bailout).
+TEST(PacketKernels, NormalsAloneEqualTheNormalsOfTheEstimates) {
+    Scene certified = testing::referenceScene("case01_sqr_A");
+    Scene uncertified = certified;
+    uncertified.fractal.bailout = 1.2;  // below the escape radius, about 1.47
+    const Scene cubic = testing::referenceScene("case08_cube_F");
+    for (const Scene& scene : {certified, uncertified, cubic}) {
+        const Fractal fractal = Fractal::fromScene(scene);
+        // Points near the set, where renders take normals, and some inside and far out.
+        PointBatch all = randomPoints(6000, 1.6, 21), points;
+        for (size_t i = 0; i < all.size(); ++i) {
+            const DistanceEstimate e = fractal.estimate(Point3d(all.x[i], all.y[i], all.z[i]));
+            if (e.distance < 0.05 || i % 10 == 0)
+                points.push(Point3d(all.x[i], all.y[i], all.z[i]));
+        }
+        ASSERT_GT(points.size(), 700u);
+        for (Precision precision : {Precision::Double, Precision::Single}) {
+            const auto lanes = LaneFractal::from(fractal, precision);
+            ASSERT_TRUE(lanes);
+            std::vector<PointEstimate> estimates;
+            LaneCounters counters;
+            estimatePoints(*lanes, points, estimates, counters);
+            std::vector<int> iterations;
+            int inside = 0;
+            for (const PointEstimate& e : estimates) {
+                iterations.push_back(gradientIterationsOf(e, lanes->maxIterations));
+                inside += e.inside;
+            }
+            EXPECT_GT(inside, 20);
+            std::vector<Vector3d> fromEstimates, alone;
+            potentialNormals(*lanes, points, iterations, fromEstimates, counters);
+            potentialNormalsAlone(*lanes, points, alone, counters);
+            ASSERT_EQ(alone.size(), points.size());
+            for (size_t i = 0; i < points.size(); ++i) {
+                ASSERT_EQ(alone[i].x, fromEstimates[i].x) << "point " << i;
+                ASSERT_EQ(alone[i].y, fromEstimates[i].y) << "point " << i;
+                ASSERT_EQ(alone[i].z, fromEstimates[i].z) << "point " << i;
+            }
+        }
+    }
+}
+
 // Camera rays in double lanes end as sphereTrace's do: the same kind of end at the same t.
 TEST(PacketKernels, CameraRaysEndWhereSphereTracingEnds) {
     Scene scene = testing::referenceScene("case01_sqr_A");

@@ -207,15 +207,19 @@ void PacketTileRenderer::marchCones(const Tile& tile, PacketTileStats& stats) {
 
 void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
     const size_t count = hits_.size();
-    // The estimate at each hit's outside point: its orbit colours the surface, and its
-    // iteration count is the M of the analytic normal (JuliaSet::gradientIterations).
-    estimatePoints(lanes_, hitPoints_, hitEstimates_, stats.shading);
-    gradientIterations_.resize(count);
-    for (size_t h = 0; h < count; ++h) {
-        const PointEstimate& e = hitEstimates_[h];
-        gradientIterations_[h] = e.inside ? lanes_.maxIterations - 1 : e.iterations;
+    // The estimate at each hit's outside point, where the orbit colours the surface: its
+    // iteration count is then the M of the analytic normal (JuliaSet::gradientIterations).
+    // Without orbit colouring, the normals find their M themselves.
+    const bool orbit = shader_.albedoUsesOrbit();
+    if (orbit) {
+        estimatePoints(lanes_, hitPoints_, hitEstimates_, stats.shading);
+        gradientIterations_.resize(count);
+        for (size_t h = 0; h < count; ++h)
+            gradientIterations_[h] = gradientIterationsOf(hitEstimates_[h], lanes_.maxIterations);
+        potentialNormals(lanes_, hitPoints_, gradientIterations_, normals_, stats.shading);
+    } else {
+        potentialNormalsAlone(lanes_, hitPoints_, normals_, stats.shading);
     }
-    potentialNormals(lanes_, hitPoints_, gradientIterations_, normals_, stats.shading);
 
     shadowRays_.clear();
     shadowHit_.clear();
@@ -264,15 +268,17 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
     for (size_t h = 0; h < count; ++h) {
         const Vector3d& n = normals_[h];
         const Vector3d& direction = hits_[h].direction;
-        const PointEstimate& e = hitEstimates_[h];
-        DistanceEstimate orbit;
-        orbit.trap = e.trap;
-        if (shader_.albedoUsesSmoothIteration()) {
-            orbit.smoothIteration =
-                e.inside ? lanes_.maxIterations
-                         : smoothEscapeCount(e.iterations, e.radiusSquared, lanes_.degree);
+        DistanceEstimate orbitOfHit;
+        if (orbit) {
+            const PointEstimate& e = hitEstimates_[h];
+            orbitOfHit.trap = e.trap;
+            if (shader_.albedoUsesSmoothIteration()) {
+                orbitOfHit.smoothIteration =
+                    e.inside ? lanes_.maxIterations
+                             : smoothEscapeCount(e.iterations, e.radiusSquared, lanes_.degree);
+            }
         }
-        const Color albedo = shader_.albedo(orbit);
+        const Color albedo = shader_.albedo(orbitOfHit);
         double visibility = 1;  // no shadows, or the shadow ray leaves the bounding sphere
         if (!(shader_.keyDiffuse(n) > 0)) {
             visibility = 0;

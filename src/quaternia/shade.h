@@ -50,6 +50,8 @@ class Shader {
     Color albedo(const DistanceEstimate& estimate) const;
     // Whether albedo() reads the estimate's smoothIteration (two logarithms to compute).
     bool albedoUsesSmoothIteration() const { return settings_.coloring == Coloring::Iteration; }
+    // Whether albedo() reads the estimate at all (a solid colour does not).
+    bool albedoUsesOrbit() const { return settings_.coloring != Coloring::Solid; }
 
     // The pieces both paths share. The key light's diffuse term (0 where it does not reach the
     // front of the surface, and no shadow ray is needed).
