@@ -69,12 +69,14 @@ int runRenderCommand(const RenderCommandOptions& options) {
     RenderResult result = runInterruptibly("rendering", options, [&](const WorkOptions& work) {
         RenderOptions renderOptions{work};
         renderOptions.depth = depthOutput.has_value();
+        // Opaque frames come as PNG samples, quantised tile by tile (no float image at all).
+        renderOptions.opaqueSamples = true;
         return render(scene, renderOptions);
     });
     if (!result.completed) return reportInterrupted();
 
-    auto png =
-        encodePng(result.image, scene.render.bitDepth, scene.render.alpha == AlphaMode::Opaque);
+    auto png = result.samples.empty() ? encodePng(result.image, scene.render.bitDepth)
+                                      : writePngBytes(result.samplesFormat, result.samples);
     output.write(png.data(), png.size());
     output.commit();
     if (depthOutput) {

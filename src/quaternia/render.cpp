@@ -13,6 +13,7 @@
 #include "march.h"
 #include "packet_kernels.h"
 #include "parameters.h"
+#include "png_kernels.h"
 #include "render_packets.h"
 #include "shade.h"
 #include "util/parallel.h"
@@ -39,6 +40,7 @@ struct alignas(64) ThreadTotals {
     RenderStats stats;
     std::unique_ptr<PacketTileRenderer> packets;  // the SIMD path's batches
     std::vector<PixelSamples> pixels;
+    std::vector<Rgba> row;  // a tile's row on its way to RenderResult::samples
 };
 
 }  // namespace
@@ -81,8 +83,31 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     const double depthRange = cameraDistance + fractal.boundingRadius() - depthNear;
 
     RenderResult result;
-    result.image = Image(settings.width, settings.height);
+    // The rows go to the float image, or straight to PNG samples (RenderOptions::opaqueSamples).
+    const bool toSamples = options.opaqueSamples && settings.alpha == AlphaMode::Opaque;
+    size_t sampleRowBytes = 0, samplePixelBytes = 0;
+    if (toSamples) {
+        result.samplesFormat = {settings.width, settings.height, settings.bitDepth,
+                                PngColorType::Rgb};
+        sampleRowBytes = pngRowBytes(result.samplesFormat);
+        samplePixelBytes = sampleRowBytes / size_t(settings.width);
+        result.samples.resize(sampleRowBytes * size_t(settings.height));
+    } else {
+        result.image = Image(settings.width, settings.height);
+    }
     if (options.depth) result.depth = GrayImage(settings.width, settings.height);
+    // Where a tile's row of display values is written, and what becomes of it once written.
+    auto rowOf = [&](ThreadTotals& thread, const Tile& tile, int py) {
+        if (!toSamples) return &result.image.at(tile.x0, py);
+        thread.row.resize(size_t(tile.x1 - tile.x0));
+        return thread.row.data();
+    };
+    auto rowDone = [&](const Tile& tile, int py, const Rgba* row) {
+        if (!toSamples) return;
+        quantisePngSamples(&row->r, size_t(tile.x1 - tile.x0), settings.bitDepth, false,
+                           result.samples.data() + size_t(py) * sampleRowBytes +
+                               size_t(tile.x0) * samplePixelBytes);
+    };
 
     const ParallelOptions parallel = imageParallelOptions(options, settings.width, settings.height);
     std::vector<ThreadTotals> totals(parallel.threads);
@@ -117,7 +142,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         return Rgba{float(color.x), float(color.y), float(color.z), float(coverage)};
     };
 
-    auto renderPixel = [&](int px, int py, RenderStats& stats) {
+    auto renderPixel = [&](int px, int py, RenderStats& stats) -> Rgba {
         PixelSamples pixel;
         ShadingStats shading;
         for (int k = 0; k < samples; ++k) {
@@ -140,8 +165,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
                                      : Color();
         Rgba linear = finishPixel(px, py, pixel, background);
         Color display = shader.toDisplay(Color(linear.r, linear.g, linear.b));
-        result.image.at(px, py) =
-            Rgba{float(display.x), float(display.y), float(display.z), linear.a};
+        return Rgba{float(display.x), float(display.y), float(display.z), linear.a};
     };
 
     // A background of one colour (its top and bottom alike), and that colour display-encoded
@@ -175,7 +199,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             // One colour, encoded once: the pixels without hits take it as they are, and only
             // the runs of pixels with hits are finished and encoded.
             for (int py = tile.y0; py < tile.y1; ++py) {
-                Rgba* row = &result.image.at(tile.x0, py);
+                Rgba* row = rowOf(thread, tile, py);
                 for (int i = 0; i < width;) {
                     if (pixel[i].hits == 0) {
                         if (options.depth) finishPixel(tile.x0 + i, py, pixel[i], backgroundColor);
@@ -189,6 +213,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
                     }
                     shader.toDisplay(row + first, size_t(i - first));
                 }
+                rowDone(tile, py, row);
                 pixel += width;
             }
             return;
@@ -196,7 +221,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         // Each row of the tile: the background first (float, vectorised), which is what a pixel
         // without hits shows, then the pixels with hits, then display encoding (SIMD) in place.
         for (int py = tile.y0; py < tile.y1; ++py) {
-            Rgba* row = &result.image.at(tile.x0, py);
+            Rgba* row = rowOf(thread, tile, py);
             const Camera::RowDirections directions = camera.rowDirections(py);
             shader.backgroundRow(directions.first, directions.step, tile.x0, width,
                                  opaque ? 1.0f : 0.0f, row);
@@ -207,22 +232,25 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             }
             // Rgba is four floats: the row's colour channels encode in place, alpha kept.
             shader.toDisplay(row, size_t(width));
+            rowDone(tile, py, row);
         }
     };
 
     auto start = std::chrono::steady_clock::now();
-    result.completed = parallelForTiles(settings.width, settings.height, parallel,
-                                        [&](const Tile& tile, int threadIndex) {
-                                            ThreadTotals& thread = totals[threadIndex];
-                                            if (lanes) {
-                                                renderTilePackets(tile, thread);
-                                                return;
-                                            }
-                                            for (int py = tile.y0; py < tile.y1; ++py) {
-                                                for (int px = tile.x0; px < tile.x1; ++px)
-                                                    renderPixel(px, py, thread.stats);
-                                            }
-                                        });
+    result.completed = parallelForTiles(
+        settings.width, settings.height, parallel, [&](const Tile& tile, int threadIndex) {
+            ThreadTotals& thread = totals[threadIndex];
+            if (lanes) {
+                renderTilePackets(tile, thread);
+                return;
+            }
+            for (int py = tile.y0; py < tile.y1; ++py) {
+                Rgba* row = rowOf(thread, tile, py);
+                for (int px = tile.x0; px < tile.x1; ++px)
+                    row[px - tile.x0] = renderPixel(px, py, thread.stats);
+                rowDone(tile, py, row);
+            }
+        });
     result.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.stats.threads = parallel.threads;

@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "image.h"
+#include "png_writer.h"
 #include "scene.h"
 #include "util/parallel.h"
 
@@ -16,6 +17,9 @@ namespace quaternia {
 // How any image is computed (3D renders, plane images): threads, cancellation, progress.
 struct RenderOptions : WorkOptions {
     bool depth = false;  // also fill RenderResult::depth
+    // Where render.alpha is "opaque": fill RenderResult::samples instead of the image, each
+    // row quantised as soon as its tile has it (while it is in cache), as encodePng would.
+    bool opaqueSamples = false;
 };
 
 struct RenderStats {
@@ -42,6 +46,12 @@ struct RenderResult {
     // Depth pass when asked for: the mean hit distance scaled so that 0 is the near side of the
     // bounding sphere and 1 its far side; 1 where nothing was hit.
     GrayImage depth;
+    // With RenderOptions::opaqueSamples and render.alpha = "opaque", in place of `image` (which
+    // stays empty): its RGB samples at the scene's bit depth, as PNG stores them (png_writer.h),
+    // the very samples that encodePng(image, bitDepth, true) writes. A quarter of the memory
+    // of the float image at 8 bits, and no second pass over it.
+    PngFormat samplesFormat;
+    std::vector<uint8_t, ZeroedAllocator<uint8_t>> samples;
     RenderStats stats;
     bool completed = true;  // false if cancelled
 };

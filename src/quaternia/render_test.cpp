@@ -7,6 +7,7 @@
 
 #include "mask_compare.h"
 #include "parameters.h"
+#include "png_io.h"
 #include "test_scenes.h"
 #include "util/error.h"
 
@@ -126,6 +127,39 @@ TEST(Render, SameImageWithAnyThreadCount) {
         ASSERT_EQ(a.image.pixels()[k].r, b.image.pixels()[k].r);
         ASSERT_EQ(a.image.pixels()[k].a, b.image.pixels()[k].a);
     }
+}
+
+// Opaque frames rendered straight to PNG samples (RenderOptions::opaqueSamples) encode to the
+// very bytes of the float image's PNG, on both engines, at both bit depths, with a background of
+// one colour and a gradient; frames with coverage alpha still come as the image.
+TEST(Render, OpaqueSamplesAreTheImagesPngSamples) {
+    Scene scene = referenceScene("case01_sqr_A");
+    scene.render.width = 70;  // tiles of 16 that do not divide the image
+    scene.render.height = 45;
+    scene.render.alpha = AlphaMode::Opaque;
+    RenderOptions asSamples;
+    asSamples.opaqueSamples = true;
+    for (RenderEngine engine : {RenderEngine::Simd, RenderEngine::Scalar}) {
+        for (int bitDepth : {8, 16}) {
+            for (bool uniform : {true, false}) {
+                scene.render.engine = engine;
+                scene.render.bitDepth = bitDepth;
+                scene.shading.backgroundTop =
+                    uniform ? scene.shading.backgroundBottom : Color(0.9, 0.2, 0.1);
+                const RenderResult image = render(scene, RenderOptions{});
+                const RenderResult samples = render(scene, asSamples);
+                EXPECT_EQ(samples.image.width(), 0);
+                ASSERT_EQ(samples.samplesFormat.colorType, PngColorType::Rgb);
+                EXPECT_EQ(writePngBytes(samples.samplesFormat, samples.samples),
+                          encodePng(image.image, bitDepth, true))
+                    << bitDepth << " bits, uniform background " << uniform;
+            }
+        }
+    }
+    scene.render.alpha = AlphaMode::Coverage;
+    const RenderResult coverage = render(scene, asSamples);
+    EXPECT_TRUE(coverage.samples.empty());
+    EXPECT_EQ(coverage.image.width(), scene.render.width);
 }
 
 TEST(Render, RejectsBadFormulaBeforeWork) {
