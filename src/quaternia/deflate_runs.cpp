@@ -41,30 +41,28 @@ constexpr std::array<uint8_t, kMaxRun + 1> makeLengthCodes() {
 }
 constexpr std::array<uint8_t, kMaxRun + 1> kLengthCodeOf = makeLengthCodes();
 
-// Bits go out least significant first (RFC 1951 3.1.1), through a 64-bit accumulator.
+// Bits go out least significant first (RFC 1951 3.1.1), through a 64-bit accumulator that
+// keeps fewer than 8 bits between puts: each put stores all 8 bytes of it and moves on by the
+// whole bytes filled, without a branch (the output needs 8 bytes of room past its end, which
+// deflateRunsBound leaves).
 class BitWriter {
   public:
     explicit BitWriter(uint8_t* out) : out_(out), start_(out) {}
-    // `count` <= 32 bits of `bits`, the first to go out in the lowest bit.
+    // `count` <= 56 bits of `bits`, the first to go out in the lowest bit.
     void put(uint64_t bits, int count) {
         buffer_ |= bits << filled_;
         filled_ += count;
-        if (filled_ >= 32) {
-            const uint32_t word = uint32_t(buffer_);
-            std::memcpy(out_, &word, 4);  // little-endian: the lowest bits first
-            out_ += 4;
-            buffer_ >>= 32;
-            filled_ -= 32;
-        }
+        std::memcpy(out_, &buffer_, 8);  // little-endian: the lowest bits first
+        const int bytes = filled_ >> 3;  // at most 7: filled_ < 8 + 56
+        out_ += bytes;
+        buffer_ >>= 8 * bytes;
+        filled_ &= 7;
     }
-    // To the next byte boundary with zero bits; then the whole bytes.
+    // To the next byte boundary with zero bits.
     void alignToByte() {
-        put(0, (8 - filled_ % 8) % 8);
-        while (filled_ > 0) {
-            *out_++ = uint8_t(buffer_);
-            buffer_ >>= 8;
-            filled_ -= 8;
-        }
+        if (filled_ > 0) *out_++ = uint8_t(buffer_);
+        buffer_ = 0;
+        filled_ = 0;
     }
     void putBytes(const uint8_t* bytes, size_t count) {  // after alignToByte
         std::memcpy(out_, bytes, count);
@@ -84,56 +82,56 @@ class BitWriter {
 // (rounding up, so that used symbols stay used) and the tree built again: flatter
 // distributions give shallower trees, and equal frequencies a balanced one.
 void huffmanLengths(const uint32_t* frequency, int symbols, int maxLength, uint8_t* lengths) {
-    std::vector<uint32_t> weight(frequency, frequency + symbols);
+    constexpr int kMaxSymbols = kLiteralLengthSymbols;
+    uint32_t weight[kMaxSymbols];
+    std::copy(frequency, frequency + symbols, weight);
     for (;;) {
-        // Leaves sorted by weight, then the two-queue construction of Huffman's tree.
-        struct Node {
-            uint64_t weight;
-            int parent;
-        };
-        std::vector<int> leaves;
+        // Leaves sorted by weight, ties by symbol (weight and symbol in one key), then the
+        // two-queue construction of Huffman's tree.
+        uint64_t leaves[kMaxSymbols];
+        size_t n = 0;
         for (int s = 0; s < symbols; ++s) {
             lengths[s] = 0;
-            if (weight[size_t(s)] > 0) leaves.push_back(s);
+            if (weight[s] > 0) leaves[n++] = uint64_t(weight[s]) << 16 | uint64_t(s);
         }
-        if (leaves.empty()) return;
-        if (leaves.size() == 1) {
-            lengths[leaves[0]] = 1;
+        if (n == 0) return;
+        if (n == 1) {
+            lengths[leaves[0] & 0xffff] = 1;
             return;
         }
-        std::stable_sort(leaves.begin(), leaves.end(),
-                         [&](int a, int b) { return weight[size_t(a)] < weight[size_t(b)]; });
-        const size_t n = leaves.size();
-        std::vector<Node> nodes(2 * n - 1);
+        std::sort(leaves, leaves + n);
+        uint64_t nodeWeight[2 * kMaxSymbols];
+        int parent[2 * kMaxSymbols];
         for (size_t i = 0; i < n; ++i)
-            nodes[i] = {weight[size_t(leaves[i])], -1};
+            nodeWeight[i] = leaves[i] >> 16, parent[i] = -1;
         size_t nextLeaf = 0, nextInner = n, made = n;
         auto takeSmallest = [&]() {
             if (nextLeaf < n &&
-                (nextInner >= made || nodes[nextLeaf].weight <= nodes[nextInner].weight))
+                (nextInner >= made || nodeWeight[nextLeaf] <= nodeWeight[nextInner]))
                 return nextLeaf++;
             return nextInner++;
         };
         while (made < 2 * n - 1) {
             const size_t a = takeSmallest(), b = takeSmallest();
-            nodes[made] = {nodes[a].weight + nodes[b].weight, -1};
-            nodes[a].parent = nodes[b].parent = int(made);
+            nodeWeight[made] = nodeWeight[a] + nodeWeight[b];
+            parent[made] = -1;
+            parent[a] = parent[b] = int(made);
             ++made;
         }
         // Depths from the root down: a parent always comes after its children.
-        std::vector<int> depth(2 * n - 1, 0);
+        int depth[2 * kMaxSymbols];
         int deepest = 0;
         for (size_t i = 2 * n - 1; i-- > 0;) {
-            if (nodes[i].parent >= 0) depth[i] = depth[size_t(nodes[i].parent)] + 1;
+            depth[i] = parent[i] >= 0 ? depth[parent[i]] + 1 : 0;
             if (i < n) deepest = std::max(deepest, depth[i]);
         }
         if (deepest <= maxLength) {
             for (size_t i = 0; i < n; ++i)
-                lengths[leaves[i]] = uint8_t(depth[i]);
+                lengths[leaves[i] & 0xffff] = uint8_t(depth[i]);
             return;
         }
-        for (uint32_t& w : weight)
-            w = (w + 1) / 2;
+        for (int s = 0; s < symbols; ++s)
+            weight[s] = (weight[s] + 1) / 2;
     }
 }
 
@@ -184,30 +182,66 @@ inline size_t runLength(const uint8_t* input, size_t i, size_t end, uint8_t prev
     return j - i;
 }
 
+// 0x80 in each byte of the little-endian `word` that equals the byte before it (`first`'s
+// for its lowest), 0 elsewhere: exact in every byte (no borrow crosses between bytes).
+inline uint64_t equalToBefore(uint64_t word, uint8_t first) {
+    constexpr uint64_t kLow7 = 0x7f7f7f7f7f7f7f7full;
+    const uint64_t differ = word ^ (word << 8 | first);
+    return ~(((differ & kLow7) + kLow7) | differ | kLow7);
+}
+
 // `previous` is the byte before input[begin], or -1 where there is none.
 void parseBlock(const uint8_t* input, size_t begin, size_t end, int previous, Parse& parse) {
     parse.symbols.resize(end - begin);
     uint16_t* out = parse.symbols.data();
-    uint32_t* frequency = parse.literalLengthFrequency;
-    std::fill(frequency, frequency + kLiteralLengthSymbols, 0);
+    // Two tables of counts, for even and odd bytes of the literal runs below, so that equal
+    // neighbours do not wait on each other's increment; summed at the end.
+    uint32_t counts[2][kLiteralLengthSymbols] = {};
     bool anyRun = false;
     for (size_t i = begin; i < end;) {
+        // A run starts where a byte and the two after it all equal the byte before it: where
+        // none of the next eight bytes does, they are eight literals (most of a rendered
+        // image's bytes, whose equal neighbours come in pairs more often than in runs).
+        if (previous >= 0 && i + 10 <= end) {
+            uint64_t word, later;
+            std::memcpy(&word, input + i, 8);
+            std::memcpy(&later, input + i + 2, 8);
+            // Flags (0x80 in a byte) of the bytes i + k equal to the byte before them, k < 8,
+            // and of the bytes i + 2 + k equal to theirs.
+            const uint64_t equal = equalToBefore(word, uint8_t(previous));
+            const uint64_t equalLater = equalToBefore(later, input[i + 1]);
+            const uint64_t next = equal >> 8 | (equalLater << 8 & 0xff00000000000000ull);
+            if ((equal & next & equalLater) == 0) {
+                for (int k = 0; k < 8; ++k) {
+                    const uint8_t byte = uint8_t(word >> (8 * k));
+                    out[k] = byte;
+                    ++counts[k & 1][byte];
+                }
+                out += 8;
+                i += 8;
+                previous = int(word >> 56);
+                continue;
+            }
+        }
         const uint8_t byte = input[i];
         if (byte == previous) {
             const size_t run = runLength(input, i, end, byte);
             if (run >= kMinRun) {
                 *out++ = uint16_t(256 + run);
-                ++frequency[257 + kLengthCodeOf[run]];
+                ++counts[0][257 + kLengthCodeOf[run]];
                 anyRun = true;
                 i += run;
                 continue;
             }
         }
         *out++ = byte;
-        ++frequency[byte];
+        ++counts[0][byte];
         previous = byte;
         ++i;
     }
+    uint32_t* frequency = parse.literalLengthFrequency;
+    for (int symbol = 0; symbol < kLiteralLengthSymbols; ++symbol)
+        frequency[symbol] = counts[0][symbol] + counts[1][symbol];
     ++frequency[kEndOfBlock];
     parse.count = size_t(out - parse.symbols.data());
     parse.anyRun = anyRun;
@@ -323,8 +357,20 @@ void writeBlock(const uint8_t* input, size_t begin, size_t end, const Parse& par
     uint32_t literalWords[256];
     for (int s = 0; s < 256; ++s)
         literalWords[s] = uint32_t(literalCodes[s]) | uint32_t(literalLengths[s]) << 16;
+    const uint16_t* symbols = parse.symbols.data();
     for (size_t k = 0; k < parse.count; ++k) {
-        const uint16_t symbol = parse.symbols[k];
+        // Three literals in one put where they come together (at most 45 bits).
+        if (k + 3 <= parse.count && (symbols[k] | symbols[k + 1] | symbols[k + 2]) < 256) {
+            const uint32_t a = literalWords[symbols[k]], b = literalWords[symbols[k + 1]],
+                           c = literalWords[symbols[k + 2]];
+            const int aBits = int(a >> 16), bBits = int(b >> 16);
+            out.put(uint64_t(a & 0xffff) | uint64_t(b & 0xffff) << aBits |
+                        uint64_t(c & 0xffff) << (aBits + bBits),
+                    aBits + bBits + int(c >> 16));
+            k += 2;
+            continue;
+        }
+        const uint16_t symbol = symbols[k];
         if (symbol < 256) {
             const uint32_t word = literalWords[symbol];
             out.put(word & 0xffff, int(word >> 16));

@@ -125,5 +125,27 @@ TEST(DeflateRuns, CompressesRunsAndResidualsWell) {
     EXPECT_EQ(inflateRaw(stream, bytes.size()), bytes);
 }
 
+// Runs begin at every offset from where a block starts, after bytes in pairs (which start no
+// run, and which the parse takes eight at a time): each quadruple of equal bytes is one literal
+// and one run of three wherever it falls. 600 pairs and 200 quadruples of 256 byte values:
+// 1400 literals of about 8 bits and 200 short runs, near 1580 bytes; the quadruples whose run
+// starts at the last of eight bytes taken as four literals would make it about 1830.
+TEST(DeflateRuns, FindsRunsAtEveryOffset) {
+    for (int lead = 0; lead < 8; ++lead) {
+        std::vector<uint8_t> bytes(size_t(lead), 7);
+        uint8_t value = 1;
+        auto next = [&] { return value = uint8_t(value * 5 + 3); };  // cycles through 256
+        for (int quad = 0; quad < 200; ++quad) {
+            for (int p = 0; p < 3; ++p)
+                bytes.insert(bytes.end(), 2, next());
+            bytes.insert(bytes.end(), 4, next());
+        }
+        const std::vector<uint8_t> stream = encodeInPieces(bytes, {});
+        EXPECT_EQ(inflateRaw(stream, bytes.size()), bytes) << "lead " << lead;
+        EXPECT_LT(stream.size(), 1650u) << "lead " << lead;
+        expectRoundTrip(bytes, "cut", {size_t(lead) + 1, size_t(lead) + 9, 1000});
+    }
+}
+
 }  // namespace
 }  // namespace quaternia
