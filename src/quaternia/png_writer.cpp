@@ -6,6 +6,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -42,21 +43,23 @@ void putU32(uint8_t* out, uint32_t value) {
     out[3] = uint8_t(value);
 }
 
-// Length, type, data and the CRC of type and data (PNG spec 5.3).
-void appendChunk(std::vector<uint8_t>& png, const char (&type)[5], const uint8_t* data,
-                 size_t size) {
+// The CRC of a chunk's type and data (PNG spec 5.3).
+uLong chunkCrc(const char (&type)[5], const uint8_t* data, size_t size) {
+    const uLong crc = crc32_z(0, reinterpret_cast<const uint8_t*>(type), 4);
+    // Not with a null pointer: zlib's crc32 then returns its initial value instead.
+    return size > 0 ? crc32_z(crc, data, size) : crc;
+}
+
+// Length, type, data and the CRC of type and data (PNG spec 5.3), given or computed here.
+void appendChunk(std::vector<uint8_t>& png, const char (&type)[5], const uint8_t* data, size_t size,
+                 std::optional<uLong> crc = std::nullopt) {
     uint8_t field[4];
     putU32(field, uint32_t(size));
     png.insert(png.end(), field, field + 4);
     const auto* typeBytes = reinterpret_cast<const uint8_t*>(type);
     png.insert(png.end(), typeBytes, typeBytes + 4);
-    uLong crc = crc32_z(0, typeBytes, 4);
-    // Not with a null pointer: zlib's crc32 then returns its initial value instead.
-    if (size > 0) {
-        png.insert(png.end(), data, data + size);
-        crc = crc32_z(crc, data, size);
-    }
-    putU32(field, uint32_t(crc));
+    if (size > 0) png.insert(png.end(), data, data + size);
+    putU32(field, uint32_t(crc ? *crc : chunkCrc(type, data, size)));
     png.insert(png.end(), field, field + 4);
 }
 
@@ -157,6 +160,9 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
     // the final block), so that the pieces simply join. The first carries the zlib header, the
     // last the checksum (appended below, once every piece's sum is known).
     std::vector<ByteBuffer> compressed(pieces.count);
+    // The CRC of each piece's IDAT chunk, taken by its task (but the last piece's, which the
+    // checksum joins later, and pieces too large for one chunk).
+    std::vector<std::optional<uLong>> pieceCrc(pieces.count);
     parallelFor(int64_t(pieces.count), options, [&](int64_t begin, int64_t end, int) {
         std::vector<uint8_t> zeroRow(rowBytes, 0), scratch[2];
         scratch[0].resize(rowBytes);
@@ -189,6 +195,8 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
             const size_t written = deflateRuns(own, ownBytes, before, piece + 1 == pieces.count,
                                                out.room(deflateRunsBound(ownBytes)));
             out.commit(written);
+            if (piece + 1 < pieces.count && out.size() <= kMaxChunkData)
+                pieceCrc[piece] = chunkCrc("IDAT", out.data(), out.size());
         }
     });
     uLong adler = adler32_z(0, nullptr, 0);
@@ -215,7 +223,12 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
     header[11] = 0;  // filter method: the five adaptive filters
     header[12] = 0;  // not interlaced
     appendChunk(png, "IHDR", header, sizeof header);
-    for (const ByteBuffer& piece : compressed) {
+    for (size_t p = 0; p < pieces.count; ++p) {
+        const ByteBuffer& piece = compressed[p];
+        if (pieceCrc[p]) {
+            appendChunk(png, "IDAT", piece.data(), piece.size(), pieceCrc[p]);
+            continue;
+        }
         for (size_t offset = 0; offset < piece.size(); offset += kMaxChunkData)
             appendChunk(png, "IDAT", piece.data() + offset,
                         std::min(kMaxChunkData, piece.size() - offset));
