@@ -76,9 +76,8 @@ struct PieceLayout {
     }
 };
 
-// Bytes appended to a buffer whose new room is not zeroed first: deflate writes only part of
-// the room it is given (deflateRunsBound, about the size of its input), and zeroing that in every
-// piece would touch as many bytes again as the whole filtered image.
+// Bytes appended to a buffer whose new room is not zeroed first (a piece's deflated bytes, and
+// the checksum after the last).
 class ByteBuffer {
   public:
     const uint8_t* data() const { return bytes_.get(); }
@@ -95,7 +94,6 @@ class ByteBuffer {
         }
         return bytes_.get() + size_;
     }
-    size_t roomLeft() const { return capacity_ - size_; }
     void commit(size_t bytes) { size_ += bytes; }
     void append(const uint8_t* bytes, size_t count) {
         std::memcpy(room(count), bytes, count);
@@ -163,21 +161,29 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
     // The CRC of each piece's IDAT chunk, taken by its task (but the last piece's, which the
     // checksum joins later, and pieces too large for one chunk).
     std::vector<std::optional<uLong>> pieceCrc(pieces.count);
-    parallelFor(int64_t(pieces.count), options, [&](int64_t begin, int64_t end, int) {
-        std::vector<uint8_t> zeroRow(rowBytes, 0), scratch[2];
-        scratch[0].resize(rowBytes);
-        scratch[1].resize(rowBytes);
-        std::vector<uint8_t> filtered;
+    // Each thread's rows and buffers, kept from piece to piece (fresh ones for every piece
+    // were page faults: a piece's filtered rows and its deflate room are 256 KiB each).
+    struct Scratch {
+        std::vector<uint8_t> zeroRow, rows[2], filtered, deflated;
+    };
+    std::vector<Scratch> scratches(size_t(resolveThreadCount(threads)));
+    parallelFor(int64_t(pieces.count), options, [&](int64_t begin, int64_t end, int thread) {
+        Scratch& scratch = scratches[size_t(thread)];
+        scratch.zeroRow.assign(rowBytes, 0);
+        scratch.rows[0].resize(rowBytes);
+        scratch.rows[1].resize(rowBytes);
+        std::vector<uint8_t>& filtered = scratch.filtered;
         for (size_t piece = size_t(begin); piece < size_t(end); ++piece) {
             const size_t firstRow = pieces.firstRow(piece), endRow = pieces.endRow(piece, height);
             const size_t filterFrom = firstRow - std::min(firstRow, rowsBefore);
             filtered.resize((endRow - filterFrom) * filteredRowBytes);
-            const uint8_t* previous =
-                filterFrom == 0 ? zeroRow.data() : rowAt(filterFrom - 1, scratch[0].data());
+            const uint8_t* previous = filterFrom == 0
+                                          ? scratch.zeroRow.data()
+                                          : rowAt(filterFrom - 1, scratch.rows[0].data());
             int next =
                 1;  // the scratch row the source may write next; previous may be in the other
             for (size_t y = filterFrom; y < endRow; ++y) {
-                const uint8_t* row = rowAt(y, scratch[next].data());
+                const uint8_t* row = rowAt(y, scratch.rows[next].data());
                 // A scanline: the filter byte, then the row's bytes filtered.
                 uint8_t* scanline = filtered.data() + (y - filterFrom) * filteredRowBytes;
                 scanline[0] = kPaethFilter;
@@ -189,12 +195,14 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
             const size_t ownBytes = (endRow - firstRow) * filteredRowBytes;
             pieceAdler[piece] = adler32Update(1, own, ownBytes);
 
+            // Deflated into the thread's room, then kept at its size.
+            const int before = own > filtered.data() ? own[-1] : -1;
+            scratch.deflated.resize(std::max(scratch.deflated.size(), deflateRunsBound(ownBytes)));
+            const size_t written = deflateRuns(own, ownBytes, before, piece + 1 == pieces.count,
+                                               scratch.deflated.data());
             ByteBuffer& out = compressed[piece];
             if (piece == 0) out.append(kZlibHeader, sizeof kZlibHeader);
-            const int before = own > filtered.data() ? own[-1] : -1;
-            const size_t written = deflateRuns(own, ownBytes, before, piece + 1 == pieces.count,
-                                               out.room(deflateRunsBound(ownBytes)));
-            out.commit(written);
+            out.append(scratch.deflated.data(), written);
             if (piece + 1 < pieces.count && out.size() <= kMaxChunkData)
                 pieceCrc[piece] = chunkCrc("IDAT", out.data(), out.size());
         }
