@@ -58,8 +58,12 @@ std::array<double, 2> samplePosition(int k, int n, int px, int py) {
 ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int height) {
     ParallelOptions parallel;
     parallel.threads = resolveThreadCount(options.threads);
-    const int64_t largeTiles = int64_t((width + 31) / 32) * int64_t((height + 31) / 32);
-    parallel.tileSize = largeTiles >= kMinimumLargeTiles ? 32 : 16;
+    auto tiles = [&](int size) {
+        return int64_t((width + size - 1) / size) * int64_t((height + size - 1) / size);
+    };
+    parallel.tileSize = tiles(64) >= kMinimumHugeTiles    ? 64
+                        : tiles(32) >= kMinimumLargeTiles ? 32
+                                                          : 16;
     parallel.cancel = options.cancel;
     if (options.progress) {
         parallel.progress = [progress = options.progress](int64_t done, int64_t total) {

@@ -129,6 +129,55 @@ TEST(PacketRender, ShadowCylindersChangeNoPixel) {
     }
 }
 
+// The tile size (imageParallelOptions: 16, 32 or 64 pixels) changes no pixel: the cone blocks
+// and shadow cylinders lie on the same 4-pixel grid in tiles of any of these sizes, and each
+// ray is marched alone whatever the lanes beside it hold.
+TEST(PacketRender, TileSizeChangesNoPixel) {
+    Scene scene = testing::referenceScene("case01_sqr_A");
+    scene.shading.shadows = Shadows::Hard;
+    const Fractal fractal = Fractal::fromScene(scene);
+    const int width = 200, height = 136;  // partial tiles of every size at the right and bottom
+    const Camera camera(scene.camera, width, height);
+    const Shader shader(scene.shading, fractal);
+    const MarchSettings march{MarchMethod::SphereTracing, 0, scene.render.epsilon,
+                              camera.pixelFootprint(1.0), scene.render.maxSteps};
+    const auto lanes = LaneFractal::from(fractal, Precision::Single);
+    ASSERT_TRUE(lanes);
+    auto renderInTiles = [&](int size) {
+        PacketTileRenderer renderer(*lanes, camera, shader, march, 1, true);
+        std::vector<PixelSamples> image(size_t(width * height)), tilePixels;
+        for (int y0 = 0; y0 < height; y0 += size) {
+            for (int x0 = 0; x0 < width; x0 += size) {
+                const Tile tile{x0, y0, std::min(x0 + size, width), std::min(y0 + size, height)};
+                PacketTileStats stats;
+                renderer.render(tile, tilePixels, stats);
+                const int tileWidth = tile.x1 - tile.x0;
+                for (int y = tile.y0; y < tile.y1; ++y) {
+                    for (int x = tile.x0; x < tile.x1; ++x)
+                        image[size_t(y * width + x)] =
+                            tilePixels[size_t((y - tile.y0) * tileWidth + (x - tile.x0))];
+                }
+            }
+        }
+        return image;
+    };
+    const std::vector<PixelSamples> reference = renderInTiles(32);
+    int hits = 0;
+    for (const PixelSamples& p : reference)
+        hits += p.hits;
+    EXPECT_GT(hits, 5000);
+    for (int size : {16, 64}) {
+        const std::vector<PixelSamples> image = renderInTiles(size);
+        for (size_t i = 0; i < image.size(); ++i) {
+            ASSERT_EQ(image[i].hits, reference[i].hits) << size << "-pixel tiles, pixel " << i;
+            ASSERT_EQ(image[i].sum.x, reference[i].sum.x) << size << "-pixel tiles, pixel " << i;
+            ASSERT_EQ(image[i].sum.y, reference[i].sum.y) << size << "-pixel tiles, pixel " << i;
+            ASSERT_EQ(image[i].sum.z, reference[i].sum.z) << size << "-pixel tiles, pixel " << i;
+            ASSERT_EQ(image[i].depthSum, reference[i].depthSum) << size << "-pixel tiles";
+        }
+    }
+}
+
 // Formulas that are not s z^d + c, and the fixed-step marcher, take the scalar path.
 TEST(PacketRender, OtherFormulasAndFixedStepUseTheScalarPath) {
     Scene scene = testing::referenceScene("case01_sqr_A");

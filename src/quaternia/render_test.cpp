@@ -18,13 +18,15 @@ using testing::referenceScene;
 using testing::unitBallScene;
 
 // With one sample a pixel is hit or not: alpha is exactly 0 or 1 (0 or 255 in the PNG).
-// Tiles: 32 pixels where the image has enough of them, 16 for small images (explorer
+// Tiles: 64 or 32 pixels where the image has enough of them, 16 for small images (explorer
 // previews), whatever the thread count, so the picture does not depend on it.
 TEST(Render, TileSizeFollowsTheImageNotTheThreads) {
     for (int threads : {1, 2, 64}) {
         WorkOptions work;
         work.threads = threads;
-        EXPECT_EQ(imageParallelOptions(work, 1920, 1080).tileSize, 32);
+        EXPECT_EQ(imageParallelOptions(work, 3840, 2160).tileSize, 64);
+        EXPECT_EQ(imageParallelOptions(work, 1920, 1080).tileSize, 64);
+        EXPECT_EQ(imageParallelOptions(work, 1280, 720).tileSize, 32);
         EXPECT_EQ(imageParallelOptions(work, 640, 360).tileSize, 32);
         EXPECT_EQ(imageParallelOptions(work, 160, 90).tileSize, 16);
         EXPECT_EQ(imageParallelOptions(work, 1, 2000).tileSize, 16);
