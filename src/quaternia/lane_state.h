@@ -46,6 +46,33 @@ struct RayLanes {
     QUATERNIA_LANE_ARRAY(T, spread);  // a cone's radius at t = 0 (RayBatch::spread)
     int64_t ray[kLaneCapacity<T>] = {};
 
+    // Moves the ray and march state of lane `from` into lane `to`, and empties `from`.
+    void moveLane(size_t from, size_t to) {
+        for (T* field : {ox, oy, oz, dx, dy, dz, t, tFar, tOutside, confirming, steps, live, radius,
+                         lastStep, relaxation, plainStep, spread})
+            field[to] = field[from];
+        ray[to] = ray[from];
+        ray[from] = -1;
+        live[from] = T(0);
+    }
+
+    // Moves the rays of lanes [first, used) into empty lanes below `first` when they all fit
+    // there; false (and nothing moved) when they do not.
+    bool gatherLive(size_t first, size_t used) {
+        size_t liveLanes = 0;
+        for (size_t lane = 0; lane < used; ++lane)
+            liveLanes += live[lane] > T(0);
+        if (liveLanes > first) return false;
+        size_t free = 0;
+        for (size_t lane = first; lane < used; ++lane) {
+            if (!(live[lane] > T(0))) continue;
+            while (live[free] > T(0))
+                ++free;
+            moveLane(lane, free);
+        }
+        return true;
+    }
+
     // Puts ray `next` of the batch into `lane` (and advances next), or empties the lane when the
     // batch is exhausted. Camera rays start at tNear; shadow rays at 0 with confirming = 1, the
     // running visibility.

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 
 #include "quaternia/lane_state.h"
 #include "quaternia/march.h"
@@ -49,6 +50,22 @@ HWY_INLINE V relaxedLength(D d, V relaxation, V t, V tPrevious, V radius, V dist
     return hn::IfThenElse(hn::And(t > tPrevious, radius > hn::Zero(d)), factor, one) * distance;
 }
 
+// Steps a batch of rays in lanes to its end: step(groups) takes one step of the rays in the
+// first `groups` vectors of lanes (refilling lanes whose rays ended from the batch) and returns
+// false once those hold none. All kLaneGroups vectors step while the batch has rays to load;
+// once the rays left fit in one vector they move into the first, which steps alone: the last
+// rays of a batch would otherwise keep both vectors iterating for the few lanes still live.
+template <class D, class T, class Step>
+HWY_INLINE void marchBatch(D d, RayLanes<T>& s, const RayBatch& rays, const size_t& next,
+                           const Step& step) {
+    const size_t lanes = hn::Lanes(d);
+    while (next < rays.size() || !s.gatherLive(lanes, kLaneGroups * lanes)) {
+        if (!step(std::integral_constant<size_t, kLaneGroups>{})) return;
+    }
+    while (step(std::integral_constant<size_t, 1>{})) {
+    }
+}
+
 // sphereTrace (march.cpp) for a batch of camera rays, kLaneGroups vectors of rays at a time.
 template <bool kQuadratic, class D>
 void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
@@ -78,14 +95,17 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
     // Cones step plainly (their steps are already short of the estimate).
     const V relaxation = hn::Set(d, T(march.relaxation));
     const M relaxing = hn::FirstN(d, march.cone || !(march.relaxation > 1) ? 0 : hn::Lanes(d));
-    for (;;) {
-        M live[K];
-        V t[K];
-        LaneEstimate<D> e[K];
-        if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) break;
+    // One step of the rays in the first G vectors of lanes (marchBatch); false once they
+    // hold none.
+    auto marchStep = [&](auto groups) {
+        constexpr size_t G = decltype(groups)::value;
+        M live[G];
+        V t[G];
+        LaneEstimate<D> e[G];
+        if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) return false;
 
         uint64_t doneLanes = 0;  // bit per lane of the rays that ended this step
-        for (size_t j = 0; j < K; ++j) {
+        for (size_t j = 0; j < G; ++j) {
             const size_t o = j * lanes;
             const V footprint = spreads ? hn::MulAdd(pixelAngle, t[j], hn::Load(d, s.spread + o))
                                         : pixelAngle * t[j];
@@ -151,7 +171,9 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
             }
             s.load(lane, rays, next);
         }
-    }
+        return true;
+    };
+    marchBatch(d, s, rays, next, marchStep);
 }
 
 // Shader::shadow (shade.cpp) for a batch of shadow rays, marched from t = 0.
@@ -179,14 +201,17 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
     const V maxSteps = hn::Set(d, T(march.maxSteps));
     const V baseRelaxation = hn::Set(d, T(march.relaxation));
     const V maxRelaxation = hn::Set(d, T(march.maxRelaxation));
-    for (;;) {
-        M live[K];
-        V t[K];
-        LaneEstimate<D> e[K];
-        if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) break;
+    // One step of the rays in the first G vectors of lanes (marchBatch); false once they
+    // hold none.
+    auto marchStep = [&](auto groups) {
+        constexpr size_t G = decltype(groups)::value;
+        M live[G];
+        V t[G];
+        LaneEstimate<D> e[G];
+        if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) return false;
 
         uint64_t doneLanes = 0;
-        for (size_t j = 0; j < K; ++j) {
+        for (size_t j = 0; j < G; ++j) {
             const size_t o = j * lanes;
             // Over-relaxation as Shader::shadow: where the balls of this point and the last do
             // not overlap, go back to the plain step.
@@ -230,7 +255,9 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
             visibility[size_t(s.ray[lane])] = finished.a[lane];
             s.load(lane, rays, next, /*startAtZero=*/true);
         }
-    }
+        return true;
+    };
+    marchBatch(d, s, rays, next, marchStep);
 }
 
 // Fractal::estimate for a batch of points, lanes filled in order (the last chunk padded). With
