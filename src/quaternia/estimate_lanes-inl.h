@@ -169,30 +169,10 @@ HWY_INLINE void startLanes(D d, V r2, M live, V bailoutSquared, V escapeRadiusSq
     }
 }
 
-// The certified loops' bookkeeping after an iterate of one group of lanes, whose |z|^2 is r2
-// and |z'|^2 derivativeSquared: count its running lanes, stop those past stopRadius and, after
-// the N-th iterate (`last`), those still within insideRadius (inside K_N), keeping |z|^2 and
-// |z'|^2 where they stop. True when every lane of the group is done.
-template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
-HWY_INLINE bool settleCertified(D d, V r2, V derivativeSquared, V stopRadius, V insideRadius,
-                                bool last, M& done, M& inside, V& stopRadiusSquared,
-                                V& stopDerivativeSquared, int64_t& running) {
-    running += int64_t(hn::Lanes(d)) - int64_t(hn::CountTrue(d, done));
-    auto stopNow = hn::AndNot(done, r2 >= stopRadius);
-    if (last) {
-        const auto insideNow = hn::AndNot(done, r2 <= insideRadius);
-        inside = hn::Or(inside, insideNow);
-        stopNow = hn::Or(stopNow, insideNow);
-    }
-    stopRadiusSquared = hn::IfThenElse(stopNow, r2, stopRadiusSquared);
-    stopDerivativeSquared = hn::IfThenElse(stopNow, derivativeSquared, stopDerivativeSquared);
-    done = hn::Or(done, stopNow);
-    return hn::AllTrue(d, done);
-}
-
-// settleCertified for loops whose stopped lanes keep |z|^2 and |z'|^2 themselves
-// (estimateThreeNumbers): count the running lanes, stop those past stopRadius and, after the
-// N-th iterate (`last`), those still within insideRadius. True when every lane is done.
+// The certified loops' bookkeeping after an iterate of one group of lanes whose stopped lanes
+// keep |z|^2 (r2) themselves (estimateThreeNumbers: merge-masked arithmetic): count its running
+// lanes, stop those past stopRadius and, after the N-th iterate (`last`), those still within
+// insideRadius (inside K_N). True when every lane of the group is done.
 template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
 HWY_INLINE bool settleFrozen(D d, V r2, V stopRadius, V insideRadius, bool last, M& done, M& inside,
                              int64_t& running) {
@@ -205,6 +185,20 @@ HWY_INLINE bool settleFrozen(D d, V r2, V stopRadius, V insideRadius, bool last,
     }
     done = hn::Or(done, stopNow);
     return hn::AllTrue(d, done);
+}
+
+// settleFrozen for loops whose lanes run on once stopped (estimateLanes): the lanes' |z|^2 and
+// |z'|^2 (derivativeSquared) are copied where they stop.
+template <class D, class V = hn::Vec<D>, class M = hn::Mask<D>>
+HWY_INLINE bool settleCertified(D d, V r2, V derivativeSquared, V stopRadius, V insideRadius,
+                                bool last, M& done, M& inside, V& stopRadiusSquared,
+                                V& stopDerivativeSquared, int64_t& running) {
+    const M doneBefore = done;
+    const bool allDone = settleFrozen(d, r2, stopRadius, insideRadius, last, done, inside, running);
+    const M stopNow = hn::AndNot(doneBefore, done);
+    stopRadiusSquared = hn::IfThenElse(stopNow, r2, stopRadiusSquared);
+    stopDerivativeSquared = hn::IfThenElse(stopNow, derivativeSquared, stopDerivativeSquared);
+    return allDone;
 }
 
 // JuliaSet::estimate (distance.cpp) in lanes: iterate while |z| <= bailout and fewer than N

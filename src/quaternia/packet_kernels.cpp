@@ -50,19 +50,29 @@ HWY_INLINE V relaxedLength(D d, V relaxation, V t, V tPrevious, V radius, V dist
     return hn::IfThenElse(hn::And(t > tPrevious, radius > hn::Zero(d)), factor, one) * distance;
 }
 
-// Steps a batch of rays in lanes to its end: step(groups) takes one step of the rays in the
-// first `groups` vectors of lanes (refilling lanes whose rays ended from the batch) and returns
-// false once those hold none. All kLaneGroups vectors step while the batch has rays to load;
-// once the rays left fit in one vector they move into the first, which steps alone: the last
-// rays of a batch would otherwise keep both vectors iterating for the few lanes still live.
-template <class D, class T, class Step>
-HWY_INLINE void marchBatch(D d, RayLanes<T>& s, const RayBatch& rays, const size_t& next,
-                           const Step& step) {
+// Steps a batch of rays in lanes to its end: step(groups, live, t, e) takes one step of the rays
+// in the first `groups` vectors of lanes from their estimates (estimateAlongRays), refilling
+// lanes whose rays ended from the batch; the march ends when those vectors hold no ray. All
+// kLaneGroups vectors step while the batch has rays to load; once the rays left fit in one
+// vector they move into the first, which steps alone: the last rays of a batch would otherwise
+// keep both vectors iterating for the few lanes still live.
+template <bool kQuadratic, class D, class T, class Step>
+HWY_INLINE void marchBatch(D d, const LaneConstants<D>& k, RayLanes<T>& s, const RayBatch& rays,
+                           const size_t& next, LaneCounters& counters, const Step& step) {
+    auto stepGroups = [&](auto groups) {
+        constexpr size_t G = decltype(groups)::value;
+        hn::Mask<D> live[G];
+        hn::Vec<D> t[G];
+        LaneEstimate<D> e[G];
+        if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) return false;
+        step(groups, live, t, e);
+        return true;
+    };
     const size_t lanes = hn::Lanes(d);
     while (next < rays.size() || !s.gatherLive(lanes, kLaneGroups * lanes)) {
-        if (!step(std::integral_constant<size_t, kLaneGroups>{})) return;
+        if (!stepGroups(std::integral_constant<size_t, kLaneGroups>{})) return;
     }
-    while (step(std::integral_constant<size_t, 1>{})) {
+    while (stepGroups(std::integral_constant<size_t, 1>{})) {
     }
 }
 
@@ -95,14 +105,9 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
     // Cones step plainly (their steps are already short of the estimate).
     const V relaxation = hn::Set(d, T(march.relaxation));
     const M relaxing = hn::FirstN(d, march.cone || !(march.relaxation > 1) ? 0 : hn::Lanes(d));
-    // One step of the rays in the first G vectors of lanes (marchBatch); false once they
-    // hold none.
-    auto marchStep = [&](auto groups) {
+    // One step of the rays in the first G vectors of lanes, from their estimates (marchBatch).
+    auto marchStep = [&](auto groups, const auto& live, const auto& t, const auto& e) {
         constexpr size_t G = decltype(groups)::value;
-        M live[G];
-        V t[G];
-        LaneEstimate<D> e[G];
-        if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) return false;
 
         uint64_t doneLanes = 0;  // bit per lane of the rays that ended this step
         for (size_t j = 0; j < G; ++j) {
@@ -171,9 +176,8 @@ void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
             }
             s.load(lane, rays, next);
         }
-        return true;
     };
-    marchBatch(d, s, rays, next, marchStep);
+    marchBatch<kQuadratic>(d, k, s, rays, next, counters, marchStep);
 }
 
 // Shader::shadow (shade.cpp) for a batch of shadow rays, marched from t = 0.
@@ -182,7 +186,6 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
                       const RayBatch& rays, std::vector<double>& visibility,
                       LaneCounters& counters) {
     using V = hn::Vec<D>;
-    using M = hn::Mask<D>;
     using T = hn::TFromD<D>;
     constexpr size_t K = kLaneGroups;
     const LaneConstants<D> k(d, fractal);
@@ -201,14 +204,9 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
     const V maxSteps = hn::Set(d, T(march.maxSteps));
     const V baseRelaxation = hn::Set(d, T(march.relaxation));
     const V maxRelaxation = hn::Set(d, T(march.maxRelaxation));
-    // One step of the rays in the first G vectors of lanes (marchBatch); false once they
-    // hold none.
-    auto marchStep = [&](auto groups) {
+    // One step of the rays in the first G vectors of lanes, from their estimates (marchBatch).
+    auto marchStep = [&](auto groups, const auto& live, const auto& t, const auto& e) {
         constexpr size_t G = decltype(groups)::value;
-        M live[G];
-        V t[G];
-        LaneEstimate<D> e[G];
-        if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) return false;
 
         uint64_t doneLanes = 0;
         for (size_t j = 0; j < G; ++j) {
@@ -255,9 +253,8 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
             visibility[size_t(s.ray[lane])] = finished.a[lane];
             s.load(lane, rays, next, /*startAtZero=*/true);
         }
-        return true;
     };
-    marchBatch(d, s, rays, next, marchStep);
+    marchBatch<kQuadratic>(d, k, s, rays, next, counters, marchStep);
 }
 
 // Fractal::estimate for a batch of points, lanes filled in order (the last chunk padded). With
