@@ -3,9 +3,6 @@
 #include <zlib.h>
 
 #include <algorithm>
-#include <cstring>
-#include <memory>
-#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -76,35 +73,6 @@ struct PieceLayout {
     }
 };
 
-// Bytes appended to a buffer whose new room is not zeroed first (a piece's deflated bytes, and
-// the checksum after the last).
-class ByteBuffer {
-  public:
-    const uint8_t* data() const { return bytes_.get(); }
-    size_t size() const { return size_; }
-
-    // At least `bytes` of writable room after the end, which commit() then adds to the size.
-    uint8_t* room(size_t bytes) {
-        if (capacity_ - size_ < bytes) {
-            const size_t capacity = std::max(size_ + bytes, 2 * capacity_);
-            auto grown = std::make_unique_for_overwrite<uint8_t[]>(capacity);
-            if (size_ > 0) std::memcpy(grown.get(), bytes_.get(), size_);
-            bytes_ = std::move(grown);
-            capacity_ = capacity;
-        }
-        return bytes_.get() + size_;
-    }
-    void commit(size_t bytes) { size_ += bytes; }
-    void append(const uint8_t* bytes, size_t count) {
-        std::memcpy(room(count), bytes, count);
-        commit(count);
-    }
-
-  private:
-    std::unique_ptr<uint8_t[]> bytes_;
-    size_t size_ = 0, capacity_ = 0;
-};
-
 void checkFormat(const PngFormat& format) {
     if (format.width <= 0 || format.height <= 0)
         throw std::invalid_argument("cannot encode an empty image as PNG");
@@ -157,7 +125,7 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
     // Each piece deflated on its own, ending on a byte boundary (but the last, which ends with
     // the final block), so that the pieces simply join. The first carries the zlib header, the
     // last the checksum (appended below, once every piece's sum is known).
-    std::vector<ByteBuffer> compressed(pieces.count);
+    std::vector<std::vector<uint8_t>> compressed(pieces.count);
     // The CRC of each piece's IDAT chunk, taken by its task (but the last piece's, which the
     // checksum joins later, and pieces too large for one chunk).
     std::vector<std::optional<uLong>> pieceCrc(pieces.count);
@@ -200,9 +168,10 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
             scratch.deflated.resize(std::max(scratch.deflated.size(), deflateRunsBound(ownBytes)));
             const size_t written = deflateRuns(own, ownBytes, before, piece + 1 == pieces.count,
                                                scratch.deflated.data());
-            ByteBuffer& out = compressed[piece];
-            if (piece == 0) out.append(kZlibHeader, sizeof kZlibHeader);
-            out.append(scratch.deflated.data(), written);
+            std::vector<uint8_t>& out = compressed[piece];
+            if (piece == 0) out.assign(kZlibHeader, kZlibHeader + sizeof kZlibHeader);
+            out.insert(out.end(), scratch.deflated.begin(),
+                       scratch.deflated.begin() + std::ptrdiff_t(written));
             if (piece + 1 < pieces.count && out.size() <= kMaxChunkData)
                 pieceCrc[piece] = chunkCrc("IDAT", out.data(), out.size());
         }
@@ -214,10 +183,10 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
     }
     uint8_t checksum[4];
     putU32(checksum, uint32_t(adler));
-    compressed.back().append(checksum, sizeof checksum);
+    compressed.back().insert(compressed.back().end(), checksum, checksum + sizeof checksum);
 
     size_t total = sizeof kPngSignature + 25 + 12;  // signature, IHDR, IEND
-    for (const ByteBuffer& piece : compressed)
+    for (const std::vector<uint8_t>& piece : compressed)
         total += piece.size() + 12 * (1 + piece.size() / kMaxChunkData);
     std::vector<uint8_t> png;
     png.reserve(total);
@@ -232,7 +201,7 @@ std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& r
     header[12] = 0;  // not interlaced
     appendChunk(png, "IHDR", header, sizeof header);
     for (size_t p = 0; p < pieces.count; ++p) {
-        const ByteBuffer& piece = compressed[p];
+        const std::vector<uint8_t>& piece = compressed[p];
         if (pieceCrc[p]) {
             appendChunk(png, "IDAT", piece.data(), piece.size(), pieceCrc[p]);
             continue;
