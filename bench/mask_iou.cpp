@@ -6,7 +6,7 @@
 #include <string>
 
 #include "mask_tool.h"
-#include "quaternia/png_io.h"
+#include "quaternia/image/png_io.h"
 
 int main(int argc, char** argv) {
     using namespace quaternia;

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "quaternia/image.h"
-#include "quaternia/mask_compare.h"
+#include "quaternia/image/image.h"
+#include "quaternia/image/mask_compare.h"
 
 namespace quaternia::bench {
 

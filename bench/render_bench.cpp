@@ -6,12 +6,12 @@
 
 #include <random>
 
-#include "quaternia/fractal.h"
-#include "quaternia/mesher.h"
-#include "quaternia/packet_kernels.h"
-#include "quaternia/parameters.h"
-#include "quaternia/png_io.h"
-#include "quaternia/render.h"
+#include "quaternia/fractal/fractal.h"
+#include "quaternia/image/png_io.h"
+#include "quaternia/mesh/mesher.h"
+#include "quaternia/render/lanes/march_lanes.h"
+#include "quaternia/render/render.h"
+#include "quaternia/scene/parameters.h"
 
 namespace quaternia {
 namespace {

@@ -9,7 +9,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   admesh
   libcpp-httplib-dev
-  chromium chromium-driver python3-selenium
+  python3 chromium chromium-driver python3-selenium
 )
 
 missing=()

@@ -1,6 +1,6 @@
 // The command line as a user meets it: bad input gives one line naming the problem, exit code 2
 // and no output file; good input writes a PNG and a summary.
-#include "cli_fixture.h"
+#include "cmd/cli_fixture.h"
 
 #include <hwy/targets.h>
 

@@ -1,14 +1,14 @@
-#include "cycles_command.h"
+#include "cmd/cycles_command.h"
 
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <vector>
 
-#include "dynamics_input.h"
-#include "json.h"
-#include "quaternia/complex_polynomial.h"
-#include "quaternia/periodic_points.h"
+#include "cmd/dynamics_input.h"
+#include "quaternia/algebra/complex_polynomial.h"
+#include "quaternia/dynamics/periodic_points.h"
+#include "quaternia/scene/json.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {

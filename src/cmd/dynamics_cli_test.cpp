@@ -1,6 +1,6 @@
-// `quaternia orbit` and `quaternia cycles` as a user meets them: the facts of ORACLES.md
+// `quaternia orbit` and `quaternia cycles` as a user meets them: the facts of docs/facts.md
 // (Cycles and multipliers) in text and JSON, and bad input as one line with exit code 2.
-#include "cli_fixture.h"
+#include "cmd/cli_fixture.h"
 
 namespace quaternia {
 namespace {

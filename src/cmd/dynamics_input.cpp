@@ -1,10 +1,10 @@
-#include "dynamics_input.h"
+#include "cmd/dynamics_input.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "quaternia/formula.h"
+#include "quaternia/algebra/formula.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {

@@ -5,8 +5,8 @@
 #include <complex>
 #include <string>
 
-#include "quaternia/polynomial.h"
-#include "quaternia/quaternion.h"
+#include "quaternia/algebra/polynomial.h"
+#include "quaternia/algebra/quaternion.h"
 
 namespace quaternia {
 

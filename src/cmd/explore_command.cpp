@@ -1,4 +1,4 @@
-#include "explore_command.h"
+#include "cmd/explore_command.h"
 
 #include <unistd.h>
 

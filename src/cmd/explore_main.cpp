@@ -10,12 +10,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli_boundary.h"
-#include "explore_command.h"
-#include "explore_server.h"
-#include "quaternia/parameters.h"
-#include "quaternia/scene_file.h"
+#include "cmd/cli_boundary.h"
+#include "cmd/explore_command.h"
+#include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_file.h"
 #include "quaternia/util/error.h"
+#include "server/explore_server.h"
 
 namespace quaternia {
 namespace {

@@ -1,6 +1,6 @@
 // `quaternia mesh` as a user meets it: each format written with a summary, JSON, and bad input
 // refused in one line with exit code 2 and no file left behind.
-#include "cli_fixture.h"
+#include "cmd/cli_fixture.h"
 
 namespace quaternia {
 namespace {

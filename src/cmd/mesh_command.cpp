@@ -1,16 +1,16 @@
-#include "mesh_command.h"
+#include "cmd/mesh_command.h"
 
 #include <chrono>
 #include <cstdio>
 #include <sstream>
 
-#include "quaternia/fractal.h"
-#include "quaternia/mesh_check.h"
-#include "quaternia/mesh_io.h"
-#include "quaternia/mesher.h"
-#include "quaternia/parameters.h"
+#include "cmd/scene_command.h"
+#include "quaternia/fractal/fractal.h"
+#include "quaternia/mesh/mesh_check.h"
+#include "quaternia/mesh/mesh_io.h"
+#include "quaternia/mesh/mesher.h"
+#include "quaternia/scene/parameters.h"
 #include "quaternia/util/atomic_file.h"
-#include "scene_command.h"
 
 namespace quaternia {
 namespace {

@@ -1,12 +1,12 @@
-#include "orbit_command.h"
+#include "cmd/orbit_command.h"
 
 #include <cstdio>
 #include <sstream>
 
-#include "dynamics_input.h"
-#include "json.h"
-#include "quaternia/connectedness.h"
-#include "quaternia/orbit.h"
+#include "cmd/dynamics_input.h"
+#include "quaternia/dynamics/connectedness.h"
+#include "quaternia/dynamics/orbit.h"
+#include "quaternia/scene/json.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
@@ -169,7 +169,7 @@ int runOrbitCommand(const OrbitCommandOptions& options) {
     OrbitOptions orbitOptions;
     orbitOptions.maxIterations = options.maxIterations;
     OrbitResult result = analyzeOrbit(p, z0, orbitOptions);
-    // Connectedness is a statement about the complex restriction's K (ORACLES.md, Mandelbrot).
+    // Connectedness is a statement about the complex restriction's K (docs/facts.md, Mandelbrot).
     std::optional<Connectedness> k;
     if (auto restriction = restrictToComplexPlane(p)) {
         k = connectedness(restriction->polynomial, options.maxIterations);

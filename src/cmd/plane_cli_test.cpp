@@ -1,5 +1,5 @@
 // `quaternia plane` as a user meets it.
-#include "cli_fixture.h"
+#include "cmd/cli_fixture.h"
 
 namespace quaternia {
 namespace {

@@ -1,12 +1,12 @@
-#include "plane_command.h"
+#include "cmd/plane_command.h"
 
 #include <cstdio>
 #include <sstream>
 
-#include "quaternia/connectedness.h"
-#include "quaternia/parameters.h"
-#include "quaternia/plane_render.h"
-#include "quaternia/png_io.h"
+#include "quaternia/dynamics/connectedness.h"
+#include "quaternia/image/png_io.h"
+#include "quaternia/plane/plane_render.h"
+#include "quaternia/scene/parameters.h"
 #include "quaternia/util/atomic_file.h"
 
 namespace quaternia {

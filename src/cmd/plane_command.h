@@ -3,7 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "scene_command.h"
+#include "cmd/scene_command.h"
 
 namespace quaternia {
 

@@ -5,15 +5,15 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli_boundary.h"
-#include "cycles_command.h"
-#include "explore_command.h"
-#include "mesh_command.h"
-#include "orbit_command.h"
-#include "plane_command.h"
-#include "quaternia/parameters.h"
+#include "cmd/cli_boundary.h"
+#include "cmd/cycles_command.h"
+#include "cmd/explore_command.h"
+#include "cmd/mesh_command.h"
+#include "cmd/orbit_command.h"
+#include "cmd/plane_command.h"
+#include "cmd/render_command.h"
+#include "quaternia/scene/parameters.h"
 #include "quaternia/util/error.h"
-#include "render_command.h"
 
 int main(int argc, char** argv) {
     using namespace quaternia;

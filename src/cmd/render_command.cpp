@@ -1,12 +1,12 @@
-#include "render_command.h"
+#include "cmd/render_command.h"
 
 #include <cstdio>
 #include <sstream>
 
-#include "quaternia/fractal.h"
-#include "quaternia/parameters.h"
-#include "quaternia/png_io.h"
-#include "quaternia/render.h"
+#include "quaternia/fractal/fractal.h"
+#include "quaternia/image/png_io.h"
+#include "quaternia/render/render.h"
+#include "quaternia/scene/parameters.h"
 #include "quaternia/util/atomic_file.h"
 #include "quaternia/util/error.h"
 

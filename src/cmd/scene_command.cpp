@@ -1,9 +1,9 @@
-#include "scene_command.h"
+#include "cmd/scene_command.h"
 
 #include <cstdio>
 
-#include "quaternia/parameters.h"
-#include "quaternia/scene_file.h"
+#include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_file.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {

@@ -11,9 +11,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "json.h"  // jsonString for the commands' summaries
-#include "progress_bar.h"
-#include "quaternia/scene.h"
+#include "cmd/progress_bar.h"
+#include "quaternia/scene/json.h"  // jsonString for the commands' summaries
+#include "quaternia/scene/scene.h"
 #include "quaternia/util/parallel.h"
 
 namespace quaternia {

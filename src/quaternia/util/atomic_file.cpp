@@ -1,4 +1,4 @@
-#include "atomic_file.h"
+#include "quaternia/util/atomic_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,7 +11,7 @@
 #include <system_error>
 #include <utility>
 
-#include "error.h"
+#include "quaternia/util/error.h"
 
 namespace quaternia {
 

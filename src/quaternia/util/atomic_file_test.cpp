@@ -1,4 +1,4 @@
-#include "atomic_file.h"
+#include "quaternia/util/atomic_file.h"
 
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "error.h"
+#include "quaternia/util/error.h"
 
 namespace quaternia {
 namespace {

@@ -1,4 +1,4 @@
-#include "parallel.h"
+#include "quaternia/util/parallel.h"
 
 #include <algorithm>
 #include <exception>

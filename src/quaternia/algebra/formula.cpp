@@ -1,0 +1,434 @@
+// The formula language of formula.h: a lexer, a recursive-descent parser over its grammar, and
+// the expansion of the parsed tree into the terms a0 z a1 ... z ad of a Polynomial.
+#include "quaternia/algebra/formula.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "quaternia/util/error.h"
+
+namespace quaternia {
+
+struct FormulaNode {
+    enum class Kind { kConstant, kZ, kC, kSum, kDifference, kProduct, kNegate, kPower };
+    Kind kind = Kind::kConstant;
+    Quaternion value;                                // kConstant
+    int exponent = 0;                                // kPower
+    std::unique_ptr<const FormulaNode> left, right;  // kNegate and kPower use only left
+};
+
+namespace {
+
+using NodePtr = std::unique_ptr<const FormulaNode>;
+
+constexpr int kMaxExponent = 64;
+constexpr int kMaxDegree = 64;
+constexpr size_t kMaxTerms = 4096;
+constexpr int kMaxNesting = 100;  // parentheses and signs: keeps recursion far from the stack's end
+constexpr size_t kMaxLength = 10000;  // bounds the depth of a chain such as z + z + ... + z
+
+[[noreturn]] void failAt(int column, const std::string& message) {
+    throw FormulaError(column, "column " + std::to_string(column) + ": " + message);
+}
+
+NodePtr makeNode(FormulaNode::Kind kind, NodePtr left = nullptr, NodePtr right = nullptr) {
+    auto node = std::make_unique<FormulaNode>();
+    node->kind = kind;
+    node->left = std::move(left);
+    node->right = std::move(right);
+    return node;
+}
+
+NodePtr makeConstant(const Quaternion& value) {
+    auto node = std::make_unique<FormulaNode>();
+    node->value = value;
+    return node;
+}
+
+// ---- Lexer -----------------------------------------------------------------------------------
+
+struct Token {
+    enum class Kind { kNumber, kName, kSymbol, kEnd };
+    Kind kind = Kind::kEnd;
+    std::string_view text;
+    int column = 0;
+    Quaternion value;      // kNumber: a real, or an imaginary literal such as 2i
+    bool integer = false;  // kNumber written with decimal digits only
+};
+
+bool isDigit(char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
+bool isNameStart(char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+bool isNameChar(char c) {
+    return isNameStart(c) || isDigit(c);
+}
+
+Quaternion unitNamed(char name) {
+    return name == 'i' ? kUnitI : name == 'j' ? kUnitJ : kUnitK;
+}
+
+class Lexer {
+  public:
+    explicit Lexer(std::string_view text) : text_(text) {}
+
+    Token next() {
+        while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_])))
+            ++pos_;
+        Token token;
+        token.column = int(pos_) + 1;
+        if (pos_ >= text_.size()) return token;
+        const char c = text_[pos_];
+        if (isDigit(c) || (c == '.' && isDigit(peek(1)))) return number(token);
+        if (isNameStart(c)) {
+            const size_t start = pos_;
+            while (pos_ < text_.size() && isNameChar(text_[pos_]))
+                ++pos_;
+            token.kind = Token::Kind::kName;
+            token.text = text_.substr(start, pos_ - start);
+            return token;
+        }
+        if (std::string_view("+-*^()").find(c) == std::string_view::npos) {
+            const bool printable = std::isprint(static_cast<unsigned char>(c)) != 0;
+            failAt(token.column, printable ? "unexpected character '" + std::string(1, c) + "'"
+                                           : std::string("unexpected non-ASCII or control "
+                                                         "character (write powers as z^2)"));
+        }
+        token.kind = Token::Kind::kSymbol;
+        token.text = text_.substr(pos_++, 1);
+        return token;
+    }
+
+  private:
+    char peek(size_t ahead) const {
+        return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
+    }
+    void skipDigits() {
+        while (isDigit(peek(0)))
+            ++pos_;
+    }
+
+    // digits [. digits] [e [+-] digits], then an optional i, j or k that is not the start of
+    // a longer name: "2i" is an imaginary literal, "2z" the product 2 z.
+    Token number(Token token) {
+        const size_t start = pos_;
+        skipDigits();
+        token.integer = true;
+        if (peek(0) == '.') {
+            ++pos_, skipDigits();
+            token.integer = false;
+        }
+        const size_t sign = (peek(1) == '+' || peek(1) == '-') ? 1 : 0;
+        if ((peek(0) == 'e' || peek(0) == 'E') && isDigit(peek(1 + sign))) {
+            pos_ += 1 + sign, skipDigits();
+            token.integer = false;
+        }
+        const std::string_view literal = text_.substr(start, pos_ - start);
+        if (peek(0) == '.')
+            failAt(token.column, "malformed number '" + std::string(literal) + ".'");
+        double value = 0;
+        auto [end, error] = std::from_chars(literal.data(), literal.data() + literal.size(), value);
+        if (error != std::errc{} || end != literal.data() + literal.size()) {
+            failAt(token.column, "the number '" + std::string(literal) + "' is out of range");
+        }
+        token.value = Quaternion(value);
+        const char suffix = peek(0);
+        if ((suffix == 'i' || suffix == 'j' || suffix == 'k') && !isNameChar(peek(1))) {
+            token.value = unitNamed(suffix) * value;
+            token.integer = false;
+            ++pos_;
+        }
+        token.kind = Token::Kind::kNumber;
+        token.text = text_.substr(start, pos_ - start);
+        return token;
+    }
+
+    std::string_view text_;
+    size_t pos_ = 0;
+};
+
+// ---- Parser ----------------------------------------------------------------------------------
+
+class Parser {
+  public:
+    explicit Parser(std::string_view text) : lexer_(text) { advance(); }
+
+    NodePtr parseFormula() {
+        if (token_.kind == Token::Kind::kEnd) {
+            failAt(1, "the formula is empty; write a polynomial in z such as 'z^2 + c'");
+        }
+        NodePtr root = parseSum();
+        if (atSymbol(')')) failAt(token_.column, "unmatched ')': no '(' is open");
+        if (token_.kind != Token::Kind::kEnd) fail("'+', '-', '*' or end of formula");
+        return root;
+    }
+
+  private:
+    void advance() { token_ = lexer_.next(); }
+    bool atSymbol(char c) const {
+        return token_.kind == Token::Kind::kSymbol && token_.text[0] == c;
+    }
+    bool startsFactor() const {
+        return token_.kind == Token::Kind::kNumber || token_.kind == Token::Kind::kName ||
+               atSymbol('(');
+    }
+    [[noreturn]] void fail(const std::string& expected) const {
+        const std::string found = token_.kind == Token::Kind::kEnd
+                                      ? "end of formula"
+                                      : "'" + std::string(token_.text) + "'";
+        failAt(token_.column, "expected " + expected + " but found " + found);
+    }
+
+    // sum := product (('+' | '-') product)*
+    NodePtr parseSum() {
+        NodePtr left = parseProduct();
+        while (atSymbol('+') || atSymbol('-')) {
+            const auto kind =
+                atSymbol('+') ? FormulaNode::Kind::kSum : FormulaNode::Kind::kDifference;
+            advance();
+            left = makeNode(kind, std::move(left), parseProduct());
+        }
+        return left;
+    }
+
+    // product := unary (['*'] unary)*: juxtaposition multiplies, but a '+' or '-' after a
+    // factor always belongs to the sum, so "z -1" is a difference.
+    NodePtr parseProduct() {
+        NodePtr left = parseUnary();
+        while (atSymbol('*') || startsFactor()) {
+            if (atSymbol('*')) advance();
+            left = makeNode(FormulaNode::Kind::kProduct, std::move(left), parseUnary());
+        }
+        return left;
+    }
+
+    // unary := ('+' | '-') unary | power. The power binds tighter: -z^2 is -(z^2).
+    NodePtr parseUnary() {
+        if (++depth_ > kMaxNesting) failAt(token_.column, "the formula is nested too deeply");
+        NodePtr node;
+        if (atSymbol('+') || atSymbol('-')) {
+            const bool minus = atSymbol('-');
+            advance();
+            node = parseUnary();
+            if (minus) node = makeNode(FormulaNode::Kind::kNegate, std::move(node));
+        } else {
+            node = parsePower();
+        }
+        --depth_;
+        return node;
+    }
+
+    // power := primary ['^' non-negative integer]
+    NodePtr parsePower() {
+        NodePtr base = parsePrimary();
+        if (!atSymbol('^')) return base;
+        advance();
+        if (token_.kind != Token::Kind::kNumber || !token_.integer) {
+            fail("a non-negative integer exponent");
+        }
+        if (token_.value.w > kMaxExponent) {
+            failAt(token_.column, "the exponent " + std::string(token_.text) +
+                                      " is too large; the limit is " +
+                                      std::to_string(kMaxExponent));
+        }
+        auto node = std::make_unique<FormulaNode>();
+        node->kind = FormulaNode::Kind::kPower;
+        node->exponent = int(token_.value.w);
+        node->left = std::move(base);
+        advance();
+        return node;
+    }
+
+    // primary := number ['i' | 'j' | 'k'] | 'i' | 'j' | 'k' | 'z' | 'c' | '(' sum ')'
+    NodePtr parsePrimary() {
+        if (token_.kind == Token::Kind::kNumber) {
+            NodePtr node = makeConstant(token_.value);
+            advance();
+            return node;
+        }
+        if (token_.kind == Token::Kind::kName) return parseName();
+        if (!atSymbol('(')) fail("a number, i, j, k, z, c or '('");
+        const int open = token_.column;
+        advance();
+        NodePtr inner = parseSum();
+        if (!atSymbol(')')) fail("')' to close the '(' at column " + std::to_string(open));
+        advance();
+        return inner;
+    }
+
+    NodePtr parseName() {
+        const std::string_view name = token_.text;
+        NodePtr node;
+        if (name == "z") {
+            node = makeNode(FormulaNode::Kind::kZ);
+        } else if (name == "c") {
+            node = makeNode(FormulaNode::Kind::kC);
+        } else if (name == "i" || name == "j" || name == "k") {
+            node = makeConstant(unitNamed(name[0]));
+        } else {
+            failAt(token_.column, "unknown name '" + std::string(name) +
+                                      "'; expected z, c, i, j, k, a number or '('");
+        }
+        advance();
+        return node;
+    }
+
+    Lexer lexer_;
+    Token token_;
+    int depth_ = 0;
+};
+
+// ---- Expansion -------------------------------------------------------------------------------
+
+using Terms = std::vector<Term>;
+
+[[noreturn]] void tooLarge(const std::string& why) {
+    throw FormulaError(0, "formula too large: " + why);
+}
+
+struct CoefficientsLess {
+    bool operator()(const std::vector<Quaternion>& a, const std::vector<Quaternion>& b) const {
+        auto less = [](const Quaternion& p, const Quaternion& q) {
+            for (int k = 0; k < 4; ++k) {
+                if (p[k] != q[k]) return p[k] < q[k];
+            }
+            return false;
+        };
+        return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), less);
+    }
+};
+
+// Adds like terms, a z a1 ... z ad + b z a1 ... z ad = (a + b) z a1 ... z ad (the same
+// coefficients after the first), keeping first-occurrence order, and drops zero terms.
+Terms combineLikeTerms(Terms terms) {
+    Terms combined;
+    std::map<std::vector<Quaternion>, size_t, CoefficientsLess> index;
+    for (Term& term : terms) {
+        const std::vector<Quaternion>& a = term.coefficients;
+        if (std::any_of(a.begin(), a.end(),
+                        [](const Quaternion& q) { return q == Quaternion{}; })) {
+            continue;
+        }
+        auto [it, inserted] =
+            index.emplace(std::vector<Quaternion>(a.begin() + 1, a.end()), combined.size());
+        if (inserted) {
+            combined.push_back(std::move(term));
+        } else {
+            combined[it->second].coefficients[0] += a[0];
+        }
+    }
+    std::erase_if(combined, [](const Term& t) { return t.coefficients[0] == Quaternion{}; });
+    if (combined.size() > kMaxTerms) tooLarge("more than 4096 terms");
+    return combined;
+}
+
+// (sum of a) (sum of b), each product a0 z ... z ad b0 z ... z be with ad b0 merged into one
+// coefficient by the Hamilton product; the order of factors is kept, since H does not commute.
+Terms multiply(const Terms& left, const Terms& right) {
+    if (left.size() * right.size() > kMaxTerms) tooLarge("multiplying out gives over 4096 terms");
+    Terms product;
+    for (const Term& a : left) {
+        for (const Term& b : right) {
+            if (a.degree() + b.degree() > kMaxDegree) {
+                tooLarge("degree " + std::to_string(a.degree() + b.degree()) +
+                         " is above the limit of " + std::to_string(kMaxDegree));
+            }
+            Term t;
+            t.coefficients.assign(a.coefficients.begin(), a.coefficients.end() - 1);
+            t.coefficients.push_back(a.coefficients.back() * b.coefficients.front());
+            t.coefficients.insert(t.coefficients.end(), b.coefficients.begin() + 1,
+                                  b.coefficients.end());
+            product.push_back(std::move(t));
+        }
+    }
+    return combineLikeTerms(std::move(product));
+}
+
+Terms negate(Terms terms) {
+    for (Term& t : terms)
+        t.coefficients[0] = -t.coefficients[0];
+    return terms;
+}
+
+Terms concatenate(Terms left, const Terms& right) {
+    left.insert(left.end(), right.begin(), right.end());
+    return combineLikeTerms(std::move(left));
+}
+
+Terms expandNode(const FormulaNode& node, const Quaternion& c) {
+    using Kind = FormulaNode::Kind;
+    switch (node.kind) {
+        case Kind::kConstant:
+            return combineLikeTerms({Term{{node.value}}});
+        case Kind::kZ:
+            return {Term{{Quaternion(1), Quaternion(1)}}};
+        case Kind::kC:
+            return combineLikeTerms({Term{{c}}});
+        case Kind::kSum:
+            return concatenate(expandNode(*node.left, c), expandNode(*node.right, c));
+        case Kind::kDifference:
+            return concatenate(expandNode(*node.left, c), negate(expandNode(*node.right, c)));
+        case Kind::kProduct:
+            return multiply(expandNode(*node.left, c), expandNode(*node.right, c));
+        case Kind::kNegate:
+            return negate(expandNode(*node.left, c));
+        case Kind::kPower: {
+            const Terms base = expandNode(*node.left, c);
+            Terms result = {Term{{Quaternion(1)}}};  // z^0 = 1, as for 0^0
+            for (int n = 0; n < node.exponent; ++n)
+                result = multiply(result, base);
+            return result;
+        }
+    }
+    return {};
+}
+
+bool containsC(const FormulaNode* node) {
+    if (node == nullptr) return false;
+    return node->kind == FormulaNode::Kind::kC || containsC(node->left.get()) ||
+           containsC(node->right.get());
+}
+
+}  // namespace
+
+Formula Formula::parse(std::string_view text) {
+    Formula formula;
+    formula.text_ = std::string(text);
+    if (text.size() > kMaxLength) {
+        throw FormulaError(
+            0, "the formula is longer than " + std::to_string(kMaxLength) + " characters");
+    }
+    formula.root_ = Parser(formula.text_).parseFormula();
+    return formula;
+}
+
+Polynomial Formula::expand(const Quaternion& c) const {
+    if (!root_) return Polynomial();
+    Terms terms = expandNode(*root_, c);
+    for (const Term& t : terms) {
+        for (const Quaternion& a : t.coefficients) {
+            if (!isFinite(a)) throw FormulaError(0, "a coefficient is not finite (overflow)");
+        }
+    }
+    return Polynomial(std::move(terms));
+}
+
+bool Formula::usesC() const {
+    return containsC(root_.get());
+}
+
+Polynomial compileFormula(std::string_view text, const Quaternion& c, const std::string& key) {
+    try {
+        return Formula::parse(text).expand(c);
+    } catch (const FormulaError& error) {
+        throw UserError(key, key + ": " + error.what());
+    }
+}
+
+}  // namespace quaternia

@@ -1,0 +1,60 @@
+// Cycles and their multipliers (seed paper section 2.2; docs/facts.md, Cycles and multipliers, and
+// Cycles of z^2 + c in H). A cycle z_0 -> z_1 -> ... -> z_{n-1} -> z_0 of a complex map has the
+// multiplier lambda = (f^n)'(z_0) = prod f'(z_k); a cycle of a quaternion map has the 4x4
+// Jacobian of f^n, the product of the Jacobians of p at the cycle points, and its eigenvalues.
+#pragma once
+
+#include <array>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "quaternia/algebra/polynomial.h"
+#include "quaternia/algebra/quaternion.h"
+
+namespace quaternia {
+
+// Superattracting |lambda| = 0, attracting < 1, neutral = 1, repelling > 1 (seed paper 2.2);
+// in H a saddle has some eigenvalues inside the unit circle and some outside.
+enum class Stability { Superattracting, Attracting, Neutral, Repelling, Saddle };
+
+std::string toString(Stability stability);
+
+struct Classification {
+    Stability stability = Stability::Neutral;
+    // The deciding modulus lies within kUnsureBand of a boundary (0 or 1) without being within
+    // kClassTolerance of it: rounding in the multiplier could change the class.
+    bool unsure = false;
+};
+
+// |lambda| within this of 0 is superattracting, within this of 1 neutral. Multipliers computed
+// from a refined cycle carry errors of a few ulps times the cycle's condition; 1e-9 absorbs them
+// for the short cycles the tools look at.
+inline constexpr double kClassTolerance = 1e-9;
+inline constexpr double kUnsureBand = 1e-6;
+
+Classification classifyMultiplier(std::complex<double> lambda);
+// The class in H from all eigenvalues of the Jacobian of f^n: superattracting if all are ~0,
+// attracting if all are inside the unit circle, repelling if all outside, saddle if some are
+// inside and some outside, neutral if the largest is ~1 and none is outside. When the smallest
+// is ~1 and some are outside, the cycle is weakly repelling: repelling, marked unsure.
+Classification classifyEigenvalues(const std::vector<std::complex<double>>& eigenvalues);
+
+// Row-major real 4x4 matrix on the coordinates (w, x, y, z) of H.
+using Matrix4 = std::array<std::array<double, 4>, 4>;
+
+Matrix4 identityMatrix4();
+Matrix4 operator*(const Matrix4& a, const Matrix4& b);
+// The Jacobian of p at z: column a is the directional derivative p.derivative(z, e_a).
+Matrix4 jacobian(const Polynomial& p, const Quaternion& z);
+// The Jacobian of f^n at cycle[0]: J(cycle[n-1]) ... J(cycle[1]) J(cycle[0]) (chain rule).
+Matrix4 cycleJacobian(const Polynomial& p, const std::vector<Quaternion>& cycle);
+// The four eigenvalues, by Hessenberg reduction and a complex QR iteration with Wilkinson
+// shifts, sorted by decreasing modulus, then real part, then imaginary part (moduli and real
+// parts compared to 12 decimals).
+std::array<std::complex<double>, 4> eigenvalues(const Matrix4& m);
+// Solves m x = b by Gaussian elimination with partial pivoting; false when m is singular to
+// working precision (a pivot below 1e-14 times the largest entry).
+bool solve(Matrix4 m, std::array<double, 4> b, std::array<double, 4>& x);
+
+}  // namespace quaternia

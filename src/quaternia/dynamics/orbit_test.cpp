@@ -1,0 +1,184 @@
+#include "quaternia/dynamics/orbit.h"
+
+#include <gtest/gtest.h>
+
+#include "quaternia/algebra/formula.h"
+#include "quaternia/algebra/test_helpers.h"
+#include "quaternia/dynamics/connectedness.h"
+
+namespace quaternia {
+namespace {
+
+using Complex = std::complex<double>;
+using testing::expectNear;
+
+// docs/facts.md, Cycles and multipliers: the rabbit and the airplane.
+const Quaternion kRabbit(-0.12256116687665, 0.74486176661974, 0, 0);
+const Quaternion kAirplane(-1.75487766624669);
+
+OrbitResult orbitOf(const Quaternion& c, const Quaternion& z0, int maxIterations = 1000) {
+    OrbitOptions options;
+    options.maxIterations = maxIterations;
+    return analyzeOrbit(compileFormula("z^2 + c", c), z0, options);
+}
+
+TEST(Orbit, CriticalOrbitOfMinusOneIsSuperattracting2Cycle) {
+    OrbitResult r = orbitOf(-1.0, 0.0);
+    EXPECT_EQ(r.fate, OrbitFate::Periodic);
+    ASSERT_TRUE(r.cycle);
+    ASSERT_EQ(r.cycle->period(), 2);
+    expectNear(r.cycle->points[0], 0.0, 0);
+    expectNear(r.cycle->points[1], -1.0, 0);
+    ASSERT_TRUE(r.cycle->multiplier);
+    EXPECT_EQ(*r.cycle->multiplier, Complex(0));
+    EXPECT_EQ(r.governingClass.stability, Stability::Superattracting);
+    EXPECT_EQ(r.cycle->classInH.stability, Stability::Superattracting);
+    EXPECT_FALSE(r.unsure);
+}
+
+TEST(Orbit, LandingOnAnAttractingCycleIsPreperiodicConvergingIsAttracted) {
+    OrbitResult landing = orbitOf(-1.0, 1.0);  // 1 -> 0 -> -1 -> 0
+    EXPECT_EQ(landing.fate, OrbitFate::Preperiodic);
+    EXPECT_EQ(landing.preperiod, 1);
+    EXPECT_EQ(landing.cycle->period(), 2);
+    OrbitResult converging = orbitOf(-1.0, Quaternion(0.3, 0.2, 0, 0));
+    EXPECT_EQ(converging.fate, OrbitFate::Attracted);
+    EXPECT_EQ(converging.cycle->period(), 2);
+    EXPECT_GT(converging.preperiod, 2);
+    EXPECT_EQ(converging.governingClass.stability, Stability::Superattracting);
+}
+
+TEST(Orbit, RepellingFixedPointsOfMinusOne) {
+    // Fixed points (1 +- sqrt 5) / 2 with multipliers 1 +- sqrt 5 (docs/facts.md).
+    const double phi = (1 + std::sqrt(5.0)) / 2;
+    for (double z : {phi, 1 - phi}) {
+        OrbitResult r = orbitOf(-1.0, z);
+        EXPECT_EQ(r.fate, OrbitFate::Periodic) << z;
+        ASSERT_TRUE(r.cycle && r.cycle->multiplier);
+        EXPECT_EQ(r.cycle->period(), 1);
+        EXPECT_NEAR(r.cycle->multiplier->real(), 2 * z, 1e-14);
+        EXPECT_EQ(r.governingClass.stability, Stability::Repelling);
+    }
+    EXPECT_NEAR(orbitOf(-1.0, phi).cycle->multiplier->real(), 3.23607, 1e-5);
+    EXPECT_NEAR(orbitOf(-1.0, 1 - phi).cycle->multiplier->real(), -1.23607, 1e-5);
+}
+
+TEST(Orbit, ParabolicFixedPointIsNeutral) {
+    OrbitResult r = orbitOf(-0.75, -0.5);
+    EXPECT_EQ(r.fate, OrbitFate::Periodic);
+    EXPECT_EQ(*r.cycle->multiplier, Complex(-1));
+    EXPECT_EQ(r.governingClass.stability, Stability::Neutral);
+    // The critical orbit converges like 1/sqrt(n): no decision within the limit.
+    EXPECT_EQ(orbitOf(-0.75, 0.0, 200).fate, OrbitFate::Undecided);
+}
+
+TEST(Orbit, CriticalOrbitOfIIsStrictlyPreperiodic) {
+    // 0 -> i -> -1+i -> -i -> -1+i: preperiod 2, period 2, multiplier 4 + 4i (docs/facts.md).
+    OrbitResult r = orbitOf(kUnitI, 0.0);
+    EXPECT_EQ(r.fate, OrbitFate::Preperiodic);
+    EXPECT_EQ(r.preperiod, 2);
+    ASSERT_EQ(r.cycle->period(), 2);
+    expectNear(r.cycle->points[0], Quaternion(-1, 1, 0, 0), 1e-14);
+    expectNear(r.cycle->points[1], Quaternion(0, -1, 0, 0), 1e-14);
+    EXPECT_NEAR(std::abs(*r.cycle->multiplier - Complex(4, 4)), 0, 1e-13);
+    EXPECT_NEAR(std::abs(*r.cycle->multiplier), 5.657, 5e-4);
+    EXPECT_EQ(r.governingClass.stability, Stability::Repelling);
+    EXPECT_FALSE(r.unsure);
+}
+
+TEST(Orbit, RabbitAndAirplaneAreSuperattracting3Cycles) {
+    for (const Quaternion& c : {kRabbit, kAirplane}) {
+        OrbitResult r = orbitOf(c, 0.0);
+        EXPECT_EQ(r.fate, OrbitFate::Periodic) << c;
+        ASSERT_TRUE(r.cycle);
+        ASSERT_EQ(r.cycle->period(), 3);
+        // 0 -> c -> c^2 + c -> 0, refined to the exact cycle of the 14-digit parameter.
+        expectNear(r.cycle->points[1], c, 1e-12);
+        expectNear(r.cycle->points[2], square(c) + c, 1e-12);
+        EXPECT_LT(std::abs(*r.cycle->multiplier), 1e-11);
+        EXPECT_EQ(r.governingClass.stability, Stability::Superattracting);
+    }
+}
+
+TEST(Orbit, RabbitInteriorOrbitIn3DSliceSettlesOn3Cycle) {
+    // z0 off the plane C_i: the orbit lives in span{1, i, j} and converges to the rabbit's
+    // cycle, superattracting in H too (mu = 8 Re 0 Re c Re(c^2 + c) = 0).
+    OrbitResult r = orbitOf(kRabbit, Quaternion(0.05, 0.02, 0.03, 0));
+    EXPECT_EQ(r.fate, OrbitFate::Attracted);
+    ASSERT_EQ(r.cycle->period(), 3);
+    EXPECT_EQ(r.cycle->classInH.stability, Stability::Superattracting);
+    EXPECT_EQ(r.governingClass.stability, Stability::Superattracting);
+    for (const Quaternion& w : r.cycle->points)
+        EXPECT_LT(std::abs(w.y) + std::abs(w.z), 1e-12) << w;
+    // Same for c = -1 with a point in a general 3D slice.
+    EXPECT_EQ(orbitOf(-1.0, Quaternion(0.1, 0.1, 0.05, -0.05)).cycle->period(), 2);
+}
+
+TEST(Orbit, QuaternionFixedPointOfIIsSaddleInH) {
+    Complex z = (1.0 - std::sqrt(Complex(1, -4))) / 2.0;
+    OrbitResult r = orbitOf(kUnitI, Quaternion(z.real(), z.imag(), 0, 0));
+    EXPECT_EQ(r.fate, OrbitFate::Periodic);
+    ASSERT_EQ(r.cycle->period(), 1);
+    EXPECT_EQ(r.cycle->complexClass.stability, Stability::Repelling);
+    EXPECT_EQ(r.cycle->classInH.stability, Stability::Saddle);
+    EXPECT_NEAR(std::abs(r.cycle->eigenvalues[0]), 1.386, 5e-4);
+    EXPECT_NEAR(r.cycle->eigenvalues[3].real(), -0.60049, 1e-5);
+    // Started in the plane, the orbit is governed by the complex class.
+    EXPECT_EQ(r.governingClass.stability, Stability::Repelling);
+    // The same point in the plane C_j of c = j: the complex multiplier is taken in C_j.
+    OrbitResult inJ = orbitOf(kUnitJ, Quaternion(z.real(), 0, z.imag(), 0));
+    EXPECT_EQ(inJ.cycle->axis, kUnitJ);
+    EXPECT_NEAR(std::abs(*inJ.cycle->multiplier - 2.0 * z), 0, 1e-14);
+    EXPECT_EQ(inJ.cycle->classInH.stability, Stability::Saddle);
+}
+
+TEST(Orbit, FixedPointOfQuarterMapIsAttractingInEveryDirection) {
+    // c = 0.1875: a point near 0.25 in H converges to it; the Jacobian there is 0.5 I.
+    OrbitResult r = orbitOf(0.1875, Quaternion(0.2, 0.01, -0.02, 0.03));
+    EXPECT_EQ(r.fate, OrbitFate::Attracted);
+    ASSERT_EQ(r.cycle->period(), 1);
+    expectNear(r.cycle->points[0], 0.25, 1e-15);
+    for (std::complex<double> e : r.cycle->eigenvalues)
+        EXPECT_NEAR(std::abs(e - 0.5), 0, 1e-14);
+    EXPECT_EQ(r.cycle->classInH.stability, Stability::Attracting);
+}
+
+TEST(Orbit, EscapeIterationIsExact) {
+    // c = 1: 0 -> 1 -> 2, and R_1 = (1 + sqrt 5) / 2 < 2.
+    OrbitResult r = orbitOf(1.0, 0.0);
+    EXPECT_EQ(r.fate, OrbitFate::Escapes);
+    EXPECT_EQ(r.escapeIteration, 2);
+    EXPECT_NEAR(r.escapeRadius, (1 + std::sqrt(5.0)) / 2, 1e-9);
+}
+
+TEST(Orbit, ConnectednessFromCriticalOrbits) {
+    auto complexMap = [](const char* formula, Quaternion c) {
+        return restrictToComplexPlane(compileFormula(formula, c))->polynomial;
+    };
+    Connectedness minusOne = connectedness(complexMap("z^2 + c", -1.0), 1000);
+    EXPECT_TRUE(minusOne.connected);
+    EXPECT_TRUE(minusOne.certain);
+    ASSERT_EQ(minusOne.criticalOrbits.size(), 1u);
+    EXPECT_EQ(minusOne.criticalOrbits[0].point, Complex(0));
+    Connectedness outside = connectedness(complexMap("z^2 + c", 0.3), 1000);
+    EXPECT_FALSE(outside.connected);
+    EXPECT_TRUE(outside.cantor);
+    EXPECT_TRUE(connectedness(complexMap("z^2 + c", kUnitI), 1000).connected);
+    // z^3 - 3z + 3: critical points +-1; 1 is a superattracting fixed point, -1 -> 5 escapes.
+    Connectedness cubic = connectedness(complexMap("z^3 - 3z + c", 3.0), 1000);
+    ASSERT_EQ(cubic.criticalOrbits.size(), 2u);
+    EXPECT_FALSE(cubic.connected);
+    EXPECT_FALSE(cubic.cantor);
+    EXPECT_TRUE(cubic.certain);
+    // z^3 + c: the double critical point 0, found exactly.
+    auto cubicCritical = criticalPoints(complexMap("z^3 + c", 0.2));
+    ASSERT_EQ(cubicCritical.size(), 1u);
+    EXPECT_EQ(cubicCritical[0].second, 2);
+    // The parabolic c = -3/4 stays undecided: connected, but not certain.
+    Connectedness parabolic = connectedness(complexMap("z^2 + c", -0.75), 300);
+    EXPECT_TRUE(parabolic.connected);
+    EXPECT_FALSE(parabolic.certain);
+}
+
+}  // namespace
+}  // namespace quaternia

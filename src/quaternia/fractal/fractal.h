@@ -1,0 +1,43 @@
+// The rendered object: a quaternion Julia set seen through a 3D slice. This is the distance
+// field every consumer shares (the marchers, shading, and later meshes and the explorer): it
+// answers in 3D world coordinates, with distances already made safe for 3D steps.
+#pragma once
+
+#include "quaternia/algebra/vecmath.h"
+#include "quaternia/fractal/distance.h"
+#include "quaternia/fractal/slice.h"
+#include "quaternia/scene/scene.h"
+
+namespace quaternia {
+
+// g / |g| for a gradient g; where g has no direction (zero or not finite: the orbit sits on a
+// critical point), the direction from the origin to p, outward for star-shaped sets.
+Vector3d normalOrOutward(const Vector3d& g, const Point3d& p);
+
+class Fractal {
+  public:
+    Fractal(JuliaSet set, Slice slice) : set_(std::move(set)), slice_(slice) {}
+    // Compiles fractal.formula with fractal.c; throws UserError naming the bad key.
+    static Fractal fromScene(const Scene& scene);
+
+    // The 4D estimate at quaternionFromWorld(p), its distance scaled by the slice's step scale
+    // so that a 3D step of that length cannot cross the set.
+    DistanceEstimate estimate(const Point3d& p) const;
+    bool contains(const Point3d& p) const { return set_.contains(slice_.quaternionFromWorld(p)); }
+    // Unit outward normal from the analytic Jacobian (one pass, docs/methods.md, Normals).
+    Vector3d normal(const Point3d& p) const;
+    // Unit normal from central differences of the potential ln|z_M|, step h: the simple
+    // reference that tests hold the analytic normal to.
+    Vector3d normalByDifferences(const Point3d& p, double h) const;
+
+    // The object lies in the ball of this radius about the origin: |p| <= |s(p)| = |L s(p) R|.
+    double boundingRadius() const { return set_.boundingRadius(); }
+    const JuliaSet& set() const { return set_; }
+    const Slice& slice() const { return slice_; }
+
+  private:
+    JuliaSet set_;
+    Slice slice_;
+};
+
+}  // namespace quaternia

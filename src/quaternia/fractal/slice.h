@@ -1,0 +1,52 @@
+// From 3D to 4D: which quaternion a point of the rendered space stands for.
+//
+// 1. The slice embedding s(p) of POV-Ray's `slice <n>, d` (tests/data/reference): the normal is
+//    normalised to s^ = n / |n|, and (x, y, z) becomes the quaternion x + y i + z j + w k with
+//    w = (d - s^_x x - s^_y y - s^_z z) / s^_w, a point of the hyperplane s^ . q = d.
+// 2. A rotation of 4D space, q -> L q R with unit quaternions L and R. Every rotation of R^4 has
+//    this form (Cayley); the seed paper's view g(q k) of section 3.2.1 is L = 1, R = -k, and
+//    L = u, R = conj(u) turns the imaginary 3-space about the axis of u. The six plane angles
+//    are composed into L and R: a turn by theta in the plane (1, u) is l = r = exp(u theta/2),
+//    one in the plane (v, w) of imaginary units is l = exp(u theta/2), r = exp(-u theta/2)
+//    with u = v x w.
+// A 3D point p is drawn iff quaternionFromWorld(p) = L s(p) R is in the set.
+#pragma once
+
+#include <array>
+
+#include "quaternia/algebra/quaternion.h"
+#include "quaternia/algebra/vecmath.h"
+#include "quaternia/scene/scene.h"
+
+namespace quaternia {
+
+class Slice {
+  public:
+    // The caller validates: normal with w != 0, left and right non-zero (they are normalised).
+    explicit Slice(const SliceSettings& settings);
+
+    Quaternion quaternionFromWorld(const Point3d& p) const;
+    // The images of the unit x, y and z directions under the (affine) map above: the columns of
+    // its Jacobian, including the tilt of the slice (w depends on x, y and z) and the rotation.
+    const std::array<Quaternion, 3>& tangents() const { return tangents_; }
+    // A 3D step of length L moves s(p) by at most L / |s^_w|: multiply a 4D distance by this
+    // factor to get a safe 3D step (docs/methods.md). The rotation is an isometry.
+    double stepScale() const { return stepScale_; }
+    const Quaternion& left() const { return left_; }
+    const Quaternion& right() const { return right_; }
+
+  private:
+    Quaternion embed(const Point3d& p) const;  // s(p)
+
+    std::array<double, 4> unitNormal_;  // s^ as (x, y, z, w)
+    double distance_;
+    Quaternion left_, right_;
+    std::array<Quaternion, 3> tangents_;
+    double stepScale_;
+};
+
+// The rotation pair (l, r) for the six plane angles in degrees, planes (1,i), (1,j), (1,k),
+// (i,j), (i,k), (j,k), applied in that order: q -> l q r.
+std::array<Quaternion, 2> rotationFromPlaneAngles(const std::array<double, 6>& anglesDegrees);
+
+}  // namespace quaternia

@@ -1,0 +1,231 @@
+#include "quaternia/plane/plane_render.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "quaternia/algebra/formula.h"
+#include "quaternia/dynamics/basins.h"
+#include "quaternia/dynamics/mandelbrot.h"
+#include "quaternia/fractal/distance.h"
+#include "quaternia/render/render.h"
+#include "quaternia/scene/parameters.h"
+#include "quaternia/util/error.h"
+#include "quaternia/util/parallel.h"
+
+namespace quaternia {
+namespace {
+
+std::string kindName(const Scene& scene) {
+    return std::get<std::string>(findParameter("plane.kind")->read(scene));
+}
+
+JuliaSet juliaSetOfScene(const Scene& scene) {
+    return JuliaSet(compileFormula(scene.fractal.formula, scene.fractal.c),
+                    scene.plane.maxIterations, scene.fractal.bailout);
+}
+
+// The degree d of a formula z^d + c, checked by compiling it with a marker c: its constant must
+// be that c and its top term z^d alone.
+int multibrotDegree(const Scene& scene) {
+    const Quaternion marker{0.5, 0.25, 0.125, 0.0625};
+    auto power = compileFormula(scene.fractal.formula, marker).powerForm();
+    if (!power || power->scale != 1 || !(power->constant == marker))
+        throw UserError("fractal.formula",
+                        "plane.kind = \"mandelbrot\" draws the Mandelbrot set of z^d + c, but "
+                        "fractal.formula = \"" +
+                            scene.fractal.formula + "\" is not of that form");
+    return power->degree;
+}
+
+// An escaped point takes the palette's colour, darkened towards the interior within two pixels
+// of the set, so that filaments thinner than a pixel stay visible (the distance estimate as a
+// shading term, Quilez, "distance rendering for fractals").
+Color escapeShade(bool inside, double smoothIteration, double distance, double pixelSize) {
+    if (inside) return interiorColor();
+    double t = std::clamp(distance / (2 * pixelSize), 0.0, 1.0);
+    return lerp(interiorColor(), escapeColor(smoothIteration), std::sqrt(t));
+}
+
+// Runs sample(point) at `samples` stratified positions of every pixel and stores the mean.
+template <typename Sampler>
+PlaneImage renderSamples(const PlaneView& view, int samples, const PlaneRenderOptions& options,
+                         const Sampler& sample) {
+    PlaneImage result;
+    result.image = Image(view.pixelWidth, view.pixelHeight);
+    const ParallelOptions parallel =
+        imageParallelOptions(options, view.pixelWidth, view.pixelHeight);
+    auto start = std::chrono::steady_clock::now();
+    result.completed =
+        parallelForTiles(view.pixelWidth, view.pixelHeight, parallel, [&](const Tile& tile, int) {
+            for (int py = tile.y0; py < tile.y1; ++py) {
+                for (int px = tile.x0; px < tile.x1; ++px) {
+                    Color sum;
+                    for (int k = 0; k < samples; ++k) {
+                        auto [sx, sy] = samplePosition(k, samples, px, py);
+                        sum += sample(view.pointAt(px + sx, py + sy));
+                    }
+                    Color mean = sum / double(samples);
+                    result.image.at(px, py) =
+                        Rgba{float(mean.x), float(mean.y), float(mean.z), 1.0f};
+                }
+            }
+        });
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.threads = parallel.threads;
+    result.samples = int64_t{view.pixelWidth} * view.pixelHeight * samples;
+    return result;
+}
+
+// Julia-set kinds: each plane point is a quaternion (`toQuaternion`), iterated by JuliaSet, the
+// one iteration of the library, so that a complex image and the same plane sliced out of H go
+// through the very same arithmetic. `scale` is the length in H of one plane unit.
+template <typename ToQuaternion>
+PlaneImage renderJulia(const Scene& scene, const PlaneView& view, double scale,
+                       const PlaneRenderOptions& options, const ToQuaternion& toQuaternion) {
+    const JuliaSet set = juliaSetOfScene(scene);
+    const double pixelSize = view.pixelSize() * scale;
+    if (scene.plane.kind == PlaneKind::JuliaBoundary) {
+        const double lineWidth = scene.plane.boundaryWidth * pixelSize;
+        return renderSamples(view, scene.render.samples, options, [&](std::complex<double> z) {
+            DistanceEstimate e = set.estimate(toQuaternion(z));
+            return !e.inside && e.distance < lineWidth ? boundaryColor() : interiorColor();
+        });
+    }
+    return renderSamples(view, scene.render.samples, options, [&](std::complex<double> z) {
+        DistanceEstimate e = set.estimate(toQuaternion(z));
+        return escapeShade(e.inside, e.smoothIteration, e.distance, pixelSize);
+    });
+}
+
+}  // namespace
+
+Color escapeColor(double smoothIteration) {
+    // a + b cos(2 pi (f t + d)) per channel, t growing like the logarithm of the count so that
+    // the bands keep a steady width from the outside in to deep zooms.
+    const double t = std::log1p(std::max(0.0, smoothIteration));
+    const Color phase(0.60, 0.70, 0.80);
+    auto channel = [&](double d) { return 0.5 + 0.5 * std::cos(2 * std::numbers::pi * (t + d)); };
+    return Color(channel(phase.x), channel(phase.y), channel(phase.z));
+}
+
+Color interiorColor() {
+    return Color(0.02, 0.02, 0.05);
+}
+
+Color boundaryColor() {
+    return Color(1.0, 0.86, 0.55);
+}
+
+PlaneView planeViewFromScene(const Scene& scene) {
+    PlaneView view;
+    view.centre = {scene.plane.center[0], scene.plane.center[1]};
+    view.width = scene.plane.width;
+    view.rotationDegrees = scene.plane.rotationDegrees;
+    view.pixelWidth = scene.render.width;
+    view.pixelHeight = scene.render.height;
+    return view;
+}
+
+ComplexRestriction complexRestrictionOfScene(const Scene& scene) {
+    auto restriction =
+        restrictToComplexPlane(compileFormula(scene.fractal.formula, scene.fractal.c));
+    if (!restriction)
+        throw UserError("fractal.formula",
+                        "plane.kind = \"" + kindName(scene) +
+                            "\" needs a complex polynomial, but the coefficients of "
+                            "fractal.formula = \"" +
+                            scene.fractal.formula +
+                            "\" share no plane span{1, u} of H; plane.kind = \"slice\" draws "
+                            "any formula");
+    if (restriction->axis == -kUnitI) {
+        // x + y(-i) read as x - y i: conjugating every coefficient turns the plane back.
+        std::vector<Complex> coefficients = restriction->polynomial.coefficients();
+        for (Complex& a : coefficients)
+            a = std::conj(a);
+        restriction = ComplexRestriction{ComplexPolynomial(std::move(coefficients)), kUnitI};
+    }
+    return *restriction;
+}
+
+void validatePlaneScene(const Scene& scene) {
+    validateScene(scene);
+    juliaSetOfScene(scene);  // the formula compiles, the bailout is usable
+    const PlaneSettings& plane = scene.plane;
+    switch (plane.kind) {
+        case PlaneKind::Julia:
+        case PlaneKind::JuliaBoundary:
+        case PlaneKind::Basins:
+            complexRestrictionOfScene(scene);
+            break;
+        case PlaneKind::Mandelbrot:
+            multibrotDegree(scene);
+            break;
+        case PlaneKind::Slice: {
+            if (normSquared(plane.u) == 0) throw UserError("plane.u", "plane.u must not be zero");
+            if (normSquared(plane.v) == 0) throw UserError("plane.v", "plane.v must not be zero");
+            // |u|^2 |v|^2 - (u . v)^2 is the squared area the two span; below 1e-18 of its
+            // largest value (the sine of their angle below 1e-9), they span no plane.
+            double uu = normSquared(plane.u), vv = normSquared(plane.v);
+            double uv = dot(plane.u, plane.v);
+            if (uu * vv - uv * uv <= 1e-18 * uu * vv)
+                throw UserError("plane.v",
+                                "plane.v is parallel to plane.u; a slice needs two "
+                                "independent directions of H");
+            break;
+        }
+    }
+}
+
+PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
+    validatePlaneScene(scene);
+    const PlaneView view = planeViewFromScene(scene);
+    const PlaneSettings& plane = scene.plane;
+    switch (plane.kind) {
+        case PlaneKind::Julia:
+        case PlaneKind::JuliaBoundary: {
+            const ComplexRestriction restriction = complexRestrictionOfScene(scene);
+            return renderJulia(scene, view, 1.0, options,
+                               [&](std::complex<double> z) { return restriction.toQuaternion(z); });
+        }
+        case PlaneKind::Slice: {
+            const double scale = std::sqrt(norm(plane.u) * norm(plane.v));
+            return renderJulia(scene, view, scale, options, [&](std::complex<double> z) {
+                return plane.origin + plane.u * z.real() + plane.v * z.imag();
+            });
+        }
+        case PlaneKind::Mandelbrot: {
+            const int degree = multibrotDegree(scene);
+            const int iterations = plane.maxIterations;
+            const double pixelSize = view.pixelSize();
+            return renderSamples(view, scene.render.samples, options, [&](std::complex<double> c) {
+                MandelbrotEstimate e = estimateMandelbrot(c, iterations, degree);
+                return escapeShade(e.inside, e.smoothIteration, e.distance, pixelSize);
+            });
+        }
+        case PlaneKind::Basins: {
+            BasinOptions basinOptions;
+            basinOptions.maxIterations = plane.maxIterations;
+            basinOptions.samples = scene.render.samples;
+            basinOptions.threads = options.threads;
+            basinOptions.cancel = options.cancel;
+            auto start = std::chrono::steady_clock::now();
+            BasinImage basins =
+                renderBasins(complexRestrictionOfScene(scene).polynomial, view, basinOptions);
+            PlaneImage result;
+            result.image = std::move(basins.image);
+            result.completed = basins.completed;
+            result.threads = resolveThreadCount(options.threads);
+            result.samples = int64_t{view.pixelWidth} * view.pixelHeight * scene.render.samples;
+            result.seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            return result;
+        }
+    }
+    return {};
+}
+
+}  // namespace quaternia

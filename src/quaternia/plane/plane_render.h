@@ -1,0 +1,53 @@
+// 2D images of complex and quaternion dynamics (`quaternia plane`): the filled Julia set K_c
+// with smooth escape colouring, the Julia set J_c drawn thin by its distance estimate, the
+// Mandelbrot set of z^d + c, basins of attraction (basins.h), and any plane through H. One view
+// (PlaneView: centre, width, rotation, image size) for every kind; stratified samples per pixel
+// as the 3D renderer takes them (samplePosition), tiles spread by the one parallel-for.
+#pragma once
+
+#include <cstdint>
+
+#include "quaternia/algebra/complex_polynomial.h"
+#include "quaternia/image/image.h"
+#include "quaternia/image/plane_view.h"
+#include "quaternia/render/render.h"
+#include "quaternia/scene/scene.h"
+
+namespace quaternia {
+
+using PlaneRenderOptions = WorkOptions;
+
+struct PlaneImage {
+    Image image;  // display values, alpha 1
+    int64_t samples = 0;
+    int threads = 0;
+    double seconds = 0;
+    bool completed = true;  // false if cancelled
+};
+
+// The view of plane.center, plane.width, plane.rotation at render.width x render.height.
+PlaneView planeViewFromScene(const Scene& scene);
+
+// The complex polynomial that fractal.formula with fractal.c restricts to (complex_polynomial.h),
+// with the plane turned so that a formula in span{1, i} keeps its orientation (c = a - b i is
+// drawn as itself, not as its mirror image a + b i). Throws UserError naming fractal.formula
+// when the coefficients share no complex plane.
+ComplexRestriction complexRestrictionOfScene(const Scene& scene);
+
+// validateScene, then what the chosen plane.kind needs: a complex restriction (julia kinds,
+// basins), a formula z^d + c (mandelbrot), plane.u and plane.v neither zero nor parallel
+// (slice), and a compilable formula. Throws UserError naming the key to change.
+void validatePlaneScene(const Scene& scene);
+
+// Validates (above), then draws the image of plane.kind.
+PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options = {});
+
+// The escape palette: a cosine gradient (Quilez, "palettes") of the smooth escape count, in
+// display values.
+Color escapeColor(double smoothIteration);
+// Points that never escaped (the set itself), and the dark ground of julia-boundary.
+Color interiorColor();
+// The line of J_c in julia-boundary.
+Color boundaryColor();
+
+}  // namespace quaternia

@@ -1,0 +1,32 @@
+#include "quaternia/render/camera.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace quaternia {
+
+Camera::Camera(const CameraSettings& settings, int width, int height)
+    : position_(settings.position), width_(width), height_(height) {
+    Vector3d forward = normalize(settings.lookAt - settings.position);
+    // cross(sky, f) with the ordinary formula gives POV-Ray's right vector: the scene is
+    // left-handed, x to the right, y up, z into the screen.
+    Vector3d rightUnit = normalize(cross(settings.up, forward));
+    Vector3d upUnit = cross(forward, rightUnit);
+    right_ = rightUnit * (double(width) / double(height));
+    up_ = upUnit;
+    double halfAngle = settings.fovDegrees * std::numbers::pi / 360.0;
+    direction_ = forward * (length(right_) / (2.0 * std::tan(halfAngle)));
+    pixelAngle_ = 2.0 * std::tan(halfAngle) / double(width);
+}
+
+std::optional<std::array<double, 2>> Camera::project(const Point3d& p) const {
+    // D, R and U are orthogonal: p - position = s (D + x0 R + y0 U) splits along them.
+    Vector3d v = p - position_;
+    double s = dot(v, direction_) / dot(direction_, direction_);
+    if (!(s > 0)) return std::nullopt;
+    double x0 = dot(v, right_) / (s * dot(right_, right_));
+    double y0 = dot(v, up_) / (s * dot(up_, up_));
+    return std::array<double, 2>{(x0 + 0.5) * width_, (0.5 - y0) * height_};
+}
+
+}  // namespace quaternia

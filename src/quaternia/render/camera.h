@@ -1,0 +1,56 @@
+// A pinhole camera with POV-Ray's conventions (left-handed, horizontal field of view, one ray
+// through each pixel centre), so that the scenes of the reference set give the same picture.
+// The formulas are those of tests/data/reference and docs/conventions.md:
+//   f = normalize(look_at - position), r = normalize(cross(up, f)), u = cross(f, r),
+//   R = (W/H) r, D = f |R| / (2 tan(fov/2)), U = u,
+//   pixel (px, py) -> direction normalize(D + x0 R + y0 U), x0 = (px + 0.5)/W - 0.5,
+//   y0 = 0.5 - (py + 0.5)/H, row 0 at the top.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "quaternia/algebra/vecmath.h"
+#include "quaternia/scene/scene.h"
+
+namespace quaternia {
+
+class Camera {
+  public:
+    Camera(const CameraSettings& settings, int width, int height);
+
+    // The ray through the image point (x, y) in pixel units: (px + 0.5, py + 0.5) is the centre
+    // of pixel (px, py); other values are used for sub-pixel samples.
+    Ray generateRay(double x, double y) const {
+        double x0 = x / width_ - 0.5;
+        double y0 = 0.5 - y / height_;
+        return Ray{position_, normalize(direction_ + right_ * x0 + up_ * y0)};
+    }
+    // The unnormalised directions of the pixel centres of row py: first + px * step for pixel
+    // px (generateRay's direction before normalisation), for work done a row at a time.
+    struct RowDirections {
+        Vector3d first, step;
+    };
+    RowDirections rowDirections(int py) const {
+        const double y0 = 0.5 - (py + 0.5) / height_;
+        return {direction_ + up_ * y0 + right_ * (0.5 / width_ - 0.5), right_ / double(width_)};
+    }
+    // The inverse: the image point (x, y) whose ray passes through p, or nullopt when p is not
+    // in front of the camera. For drawing geometry (a mesh's silhouette) in the same picture.
+    std::optional<std::array<double, 2>> project(const Point3d& p) const;
+
+    // Width of one pixel at distance t along a ray near the image centre: t * 2 tan(fov/2) / W.
+    // Marching epsilons are fractions of it, so precision follows the image resolution.
+    double pixelFootprint(double t) const { return t * pixelAngle_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const Point3d& position() const { return position_; }
+
+  private:
+    Point3d position_;
+    Vector3d right_, up_, direction_;  // R, U, D above
+    int width_, height_;
+    double pixelAngle_;
+};
+
+}  // namespace quaternia

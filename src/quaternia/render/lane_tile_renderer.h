@@ -1,0 +1,115 @@
+// The SIMD path of render(): a tile's camera rays marched together in lanes, then its hits
+// shaded in batches (normals, shadow rays, ambient occlusion), each batch one call of the packet
+// kernels (packet_kernels.h), and lit together (shading_kernels.h, Shader::light's formula), so
+// both paths make the same picture up to the precision of the lanes.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "quaternia/render/camera.h"
+#include "quaternia/render/lanes/march_lanes.h"
+#include "quaternia/render/march.h"
+#include "quaternia/render/shade.h"
+#include "quaternia/util/parallel.h"
+
+namespace quaternia {
+
+// The samples of one pixel, summed.
+struct PixelSamples {
+    Color sum;
+    double depthSum = 0;
+    int hits = 0;
+};
+
+// Work of one tile, for RenderStats.
+struct PacketTileStats {
+    int64_t marchSteps = 0;
+    LaneCounters camera, shading;
+};
+
+// One per thread: owns the batches, so that after the first tiles nothing is allocated.
+class PacketTileRenderer {
+  public:
+    // shadowCylinders: hard shadow rays are shortened by a cylinder per block (clipShadowRays),
+    // which changes no pixel; false only to check that.
+    PacketTileRenderer(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
+                       const MarchSettings& march, int samples, bool shadowCylinders = true);
+
+    // Marches and shades every sample of every pixel of the tile; pixels[(y - y0) * width +
+    // (x - x0)] receives the sums of pixel (x, y).
+    void render(const Tile& tile, std::vector<PixelSamples>& pixels, PacketTileStats& stats);
+
+  private:
+    // Cone marching (Amanatides 1984; as in demoscene "cone marching"): one cone per block of
+    // kConeBlock^2 pixels marched to where the set may be near, so that the pixels' own rays
+    // start there; blockStart_ gets that t, or infinity where the whole block misses.
+    static constexpr int kConeBlock = 4;
+    void marchCones(const Tile& tile, PacketTileStats& stats);
+    // One sample per pixel: the rays through the centres of row py of the tile, in rowRays_,
+    // for the pixels of the blocks whose start (blockStart_, the row's blocks) is finite.
+    void rowRays(const Tile& tile, int py, const double* blockStart);
+    void shadeHits(PacketTileStats& stats);
+    // Hard shadows: one cylinder about the shadow rays of each block of kConeBlock^2 pixels
+    // with at least kMinCylinderRays of them shortens them to where it stopped, and leaves out
+    // of shadowRays_ those it cleared whole (shadowClear_).
+    static constexpr size_t kMinCylinderRays = 4;
+    void clipShadowRays(PacketTileStats& stats);
+
+    LaneFractal lanes_;
+    const Camera& camera_;
+    const Shader& shader_;
+    CameraMarch march_;
+    int samples_;
+    bool shadowCylinders_;
+    double boundingRadius_;
+    LightConstants lightConstants_;
+    // The cones' radius per unit of t, for every block of the image (coneRatio()).
+    static double coneRatio(const Camera& camera);
+    double coneRatio_;
+
+    RayBatch cones_;
+    std::vector<TraceResult> coneResults_;
+    std::vector<int> coneBlock_;
+    std::vector<double> blockStart_;
+    std::vector<Ray> coneCentres_;
+
+    // A row of the tile's rays (from the camera), and where each is inside the bounding sphere
+    // (tNear > tFar where it misses).
+    struct RowRay {
+        Vector3d direction;
+        double tNear, tFar;
+    };
+    std::vector<RowRay> rowRays_;
+    // The batches of the current sample of the tile.
+    RayBatch rays_;
+    std::vector<int> rayPixel_;  // which pixel of the tile each ray belongs to
+    std::vector<int> rayBlock_;  // and which of its cone blocks
+    std::vector<TraceResult> traced_;
+    struct HitRecord {
+        int pixel, block;
+        double t;
+        Vector3d direction;
+        Point3d outside;
+    };
+    std::vector<HitRecord> hits_;
+    PointBatch hitPoints_;
+    std::vector<PointEstimate> hitEstimates_;
+    std::vector<int> gradientIterations_;
+    std::vector<Vector3d> normals_;
+    RayBatch shadowRays_;
+    std::vector<int> shadowHit_;
+    std::vector<double> shadowVisibility_, marchedVisibility_;
+    int tileBlocks_ = 0;
+    std::vector<int> blockStarts_, blockFill_;
+    std::vector<int> shadowOrder_;  // the shadow rays, block by block
+    RayBatch cylinders_;
+    std::vector<std::pair<size_t, size_t>> cylinderRays_;
+    std::vector<TraceResult> cylinderResults_;
+    std::vector<uint8_t> shadowClear_;
+    PointBatch occlusionPoints_;
+    std::vector<double> occlusionDistances_;
+    SurfaceBatch surfaces_;  // each hit's surface sample and, once lit, its colour
+};
+
+}  // namespace quaternia

@@ -1,0 +1,72 @@
+// The plain-C++ side of packet_kernels.h: flattening a Fractal for the lanes, and the batches.
+#include <cmath>
+
+#include "quaternia/render/lanes/march_lanes.h"
+
+namespace quaternia {
+
+std::optional<LaneFractal> LaneFractal::from(const Fractal& fractal, Precision precision) {
+    const JuliaSet& set = fractal.set();
+    std::optional<PowerForm> power = set.polynomial().powerForm();
+    if (!power || power->degree < 1 || power->degree > kMaxLaneDegree) return std::nullopt;
+    LaneFractal lanes;
+    auto components = [](const Quaternion& q) { return std::array<double, 4>{q.w, q.x, q.y, q.z}; };
+    const Slice& slice = fractal.slice();
+    // The slice map is affine: its value at the origin plus the images of the unit vectors.
+    lanes.origin = components(slice.quaternionFromWorld(Point3d(0, 0, 0)));
+    for (int axis = 0; axis < 3; ++axis)
+        lanes.axes[axis] = components(slice.tangents()[axis]);
+    lanes.c = components(power->constant);
+    lanes.scale = power->scale;
+    lanes.degree = power->degree;
+    lanes.maxIterations = set.maxIterations();
+    lanes.bailoutSquared = set.bailout() * set.bailout();
+    lanes.escapeRadiusSquared = set.escapeRadius() * set.escapeRadius();
+    lanes.stepScale = slice.stepScale();
+    lanes.precision = precision;
+    return lanes;
+}
+
+LaneFractal LaneFractal::withComplexConstant() const {
+    const Vector3d imaginary(c[1], c[2], c[3]);
+    const double length = std::sqrt(dot(imaginary, imaginary));
+    if (!(length > 0)) return *this;  // c is real already
+    // An orthonormal, right-handed frame whose first axis is Im c: phi maps v to its
+    // coordinates in it.
+    const Vector3d first = imaginary / length;
+    const Vector3d helper = std::abs(first.x) < 0.6 ? Vector3d(1, 0, 0) : Vector3d(0, 1, 0);
+    const Vector3d second = normalize(cross(first, helper));
+    const Vector3d third = cross(first, second);
+    auto rotate = [&](const std::array<double, 4>& q) {
+        const Vector3d v(q[1], q[2], q[3]);
+        return std::array<double, 4>{q[0], dot(v, first), dot(v, second), dot(v, third)};
+    };
+    LaneFractal rotated = *this;
+    rotated.origin = rotate(origin);
+    for (auto& axis : rotated.axes)
+        axis = rotate(axis);
+    rotated.c = {c[0], length, 0, 0};
+    return rotated;
+}
+
+void RayBatch::clear() {
+    for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tNear, &tFar, &spread})
+        v->clear();
+}
+
+void RayBatch::removeFlagged(const std::vector<uint8_t>& drop) {
+    for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &tNear, &tFar, &spread}) {
+        if (v->empty()) continue;  // spread is optional
+        size_t kept = 0;
+        for (size_t r = 0; r < v->size(); ++r) {
+            if (!drop[r]) (*v)[kept++] = (*v)[r];
+        }
+        v->resize(kept);
+    }
+}
+
+void PointBatch::clear() {
+    x.clear(), y.clear(), z.clear();
+}
+
+}  // namespace quaternia

@@ -1,0 +1,117 @@
+// Per-lane bookkeeping of the SIMD kernels (packet_kernels.cpp): aligned arrays that hold one
+// value per lane, loaded into and stored from vectors each step, and the scalar refill of a lane
+// whose ray has finished. Plain C++ (no SIMD), shared by every instruction-set target.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
+#include "quaternia/render/lanes/march_lanes.h"
+#include "quaternia/util/lane_width.h"
+
+namespace quaternia {
+
+// Rays are marched kLaneGroups vectors at a time, so that independent iterations overlap.
+inline constexpr size_t kLaneGroups = 2;
+template <class T>
+inline constexpr size_t kLaneCapacity = kLaneGroups* kMaxLaneBytes / sizeof(T);
+// One value per lane, aligned for vector loads and stores.
+#define QUATERNIA_LANE_ARRAY(T, name) alignas(kMaxLaneBytes) T name[kLaneCapacity<T>] = {}
+
+// The rays in the lanes: ray (index into the batch, -1 for an empty lane) and march state.
+template <class T>
+struct RayLanes {
+    QUATERNIA_LANE_ARRAY(T, ox);
+    QUATERNIA_LANE_ARRAY(T, oy);
+    QUATERNIA_LANE_ARRAY(T, oz);
+    QUATERNIA_LANE_ARRAY(T, dx);
+    QUATERNIA_LANE_ARRAY(T, dy);
+    QUATERNIA_LANE_ARRAY(T, dz);
+    QUATERNIA_LANE_ARRAY(T, t);
+    QUATERNIA_LANE_ARRAY(T, tFar);
+    QUATERNIA_LANE_ARRAY(T, tOutside);
+    QUATERNIA_LANE_ARRAY(T, confirming);
+    QUATERNIA_LANE_ARRAY(T, steps);
+    QUATERNIA_LANE_ARRAY(T, live);
+    // Over-relaxed marching: the last ball's radius and the last step (camera rays: the relaxed
+    // step, 0 where it was plain), the factor of the last step (shadow rays), the plain step
+    // (camera rays).
+    QUATERNIA_LANE_ARRAY(T, radius);
+    QUATERNIA_LANE_ARRAY(T, lastStep);
+    QUATERNIA_LANE_ARRAY(T, relaxation);
+    QUATERNIA_LANE_ARRAY(T, plainStep);
+    QUATERNIA_LANE_ARRAY(T, spread);  // a cone's radius at t = 0 (RayBatch::spread)
+    int64_t ray[kLaneCapacity<T>] = {};
+
+    // Moves the ray and march state of lane `from` into lane `to`, and empties `from`.
+    void moveLane(size_t from, size_t to) {
+        for (T* field : {ox, oy, oz, dx, dy, dz, t, tFar, tOutside, confirming, steps, live, radius,
+                         lastStep, relaxation, plainStep, spread})
+            field[to] = field[from];
+        ray[to] = ray[from];
+        ray[from] = -1;
+        live[from] = T(0);
+    }
+
+    // Moves the rays of lanes [first, used) into empty lanes below `first` when they all fit
+    // there; false (and nothing moved) when they do not.
+    bool gatherLive(size_t first, size_t used) {
+        size_t liveLanes = 0;
+        for (size_t lane = 0; lane < used; ++lane)
+            liveLanes += live[lane] > T(0);
+        if (liveLanes > first) return false;
+        size_t free = 0;
+        for (size_t lane = first; lane < used; ++lane) {
+            if (!(live[lane] > T(0))) continue;
+            while (live[free] > T(0))
+                ++free;
+            moveLane(lane, free);
+        }
+        return true;
+    }
+
+    // Puts ray `next` of the batch into `lane` (and advances next), or empties the lane when the
+    // batch is exhausted. Camera rays start at tNear; shadow rays at 0 with confirming = 1, the
+    // running visibility.
+    void load(size_t lane, const RayBatch& rays, size_t& next, bool startAtZero = false) {
+        if (next >= rays.size()) {
+            ray[lane] = -1;
+            live[lane] = T(0);
+            return;
+        }
+        size_t i = next++;
+        ray[lane] = int64_t(i);
+        live[lane] = T(1);
+        ox[lane] = T(rays.ox[i]), oy[lane] = T(rays.oy[i]), oz[lane] = T(rays.oz[i]);
+        dx[lane] = T(rays.dx[i]), dy[lane] = T(rays.dy[i]), dz[lane] = T(rays.dz[i]);
+        t[lane] = startAtZero ? T(0) : T(rays.tNear[i]);
+        tOutside[lane] = t[lane];
+        tFar[lane] = T(rays.tFar[i]);
+        confirming[lane] = startAtZero ? T(1) : T(0);
+        steps[lane] = T(0);
+        radius[lane] = lastStep[lane] = plainStep[lane] = T(0);
+        spread[lane] = rays.spread.empty() ? T(0) : T(rays.spread[i]);
+        relaxation[lane] = T(1);  // a shadow ray's first step: no step behind it to check
+    }
+};
+
+// Four arrays of scratch per lane: results on their way out, or points on their way in.
+template <class T>
+struct LaneScratch {
+    QUATERNIA_LANE_ARRAY(T, a);
+    QUATERNIA_LANE_ARRAY(T, b);
+    QUATERNIA_LANE_ARRAY(T, c);
+    QUATERNIA_LANE_ARRAY(T, kind);
+
+    // Points [begin, begin + count) into a, b, c; the lanes past count repeat the last point so
+    // that every lane computes something finite.
+    void gather(const PointBatch& points, size_t begin, size_t count) {
+        for (size_t lane = 0; lane < kLaneCapacity<T>; ++lane) {
+            size_t i = begin + std::min(lane, count - 1);
+            a[lane] = T(points.x[i]), b[lane] = T(points.y[i]), c[lane] = T(points.z[i]);
+        }
+    }
+};
+
+}  // namespace quaternia

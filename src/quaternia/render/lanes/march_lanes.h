@@ -1,0 +1,160 @@
+// The SIMD path of the renderer: the distance estimate, the marchers, the analytic normal and the
+// estimates of shading, run on many rays or points at once in SIMD lanes (Highway, with runtime
+// dispatch to SSE4, AVX2 or AVX-512, whichever the CPU has). Each lane follows its own ray; a
+// lane whose ray has finished takes the next ray of the batch at once, so lanes stay busy until
+// the batch runs dry. The arithmetic is the scalar reference's (distance.cpp, march.cpp, one
+// formula in julia_lanes-inl.h), in float or double lanes.
+//
+// Only polynomials of the form s z^d + c take this path (z^2 + c specialised); others use the
+// scalar reference, which is correct for every eq. 2.10 polynomial.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "quaternia/algebra/vecmath.h"
+#include "quaternia/fractal/fractal.h"
+
+namespace quaternia {
+
+// A Fractal flattened for the lanes: the slice as an affine map p -> origin + x axes[0] +
+// y axes[1] + z axes[2] of R^3 into H, and the power form s z^d + c.
+struct LaneFractal {
+    std::array<double, 4> origin{};
+    std::array<std::array<double, 4>, 3> axes{};
+    std::array<double, 4> c{};
+    double scale = 1;
+    int degree = 2;
+    int maxIterations = 1;
+    double bailoutSquared = 4, escapeRadiusSquared = 4, stepScale = 1;
+    Precision precision = Precision::Single;
+
+    // nullopt when the polynomial is not s z^d + c.
+    static std::optional<LaneFractal> from(const Fractal& fractal, Precision precision);
+
+    // The same object seen through the rotation phi of the imaginary 3-space that takes Im c
+    // onto the i axis: c becomes the complex Re c + |Im c| i and the slice map is followed by
+    // phi. phi(q) = u q conj(u) is an algebra automorphism that keeps |q| and inner products
+    // (docs/facts.md, Symmetries), so phi(s z^d + c) = s phi(z)^d + phi(c): every orbit is the
+    // rotated orbit, with the same radii, escape counts, estimates and gradient products. With
+    // a complex c the j and k components of z^2 + c only scale (the quadratic float loop of
+    // estimate_lanes-inl.h iterates three numbers instead of four).
+    LaneFractal withComplexConstant() const;
+};
+
+// Work done by the lanes, to explain speed: polynomial evaluations that did useful work, and the
+// lane slots that were available for them (utilisation = laneIterations / laneSlots).
+struct LaneCounters {
+    int64_t estimates = 0;       // distance estimates (or membership tests) completed
+    int64_t laneIterations = 0;  // polynomial evaluations in live lanes
+    int64_t laneSlots = 0;       // vector iterations times lanes
+    LaneCounters& operator+=(const LaneCounters& o) {
+        estimates += o.estimates;
+        laneIterations += o.laneIterations;
+        laneSlots += o.laneSlots;
+        return *this;
+    }
+};
+
+// Rays as structure of arrays; t runs over [tNear, tFar] (the bounding sphere).
+struct RayBatch {
+    std::vector<double> ox, oy, oz, dx, dy, dz, tNear, tFar;
+    // Cones only (CameraMarch::cone), and optional: each cone's radius at t = 0, to which
+    // pixelAngle * t adds (a cylinder where pixelAngle is 0). Empty means 0 for every ray.
+    std::vector<double> spread;
+    void clear();
+    // Keeps the rays whose flag in `drop` is 0, in their order (`drop` has one per ray).
+    void removeFlagged(const std::vector<uint8_t>& drop);
+    void push(const Ray& ray, double near, double far) {
+        ox.push_back(ray.origin.x), oy.push_back(ray.origin.y), oz.push_back(ray.origin.z);
+        dx.push_back(ray.direction.x), dy.push_back(ray.direction.y), dz.push_back(ray.direction.z);
+        tNear.push_back(near), tFar.push_back(far);
+    }
+    size_t size() const { return ox.size(); }
+};
+
+// Points as structure of arrays.
+struct PointBatch {
+    std::vector<double> x, y, z;
+    void clear();
+    void push(const Point3d& p) { x.push_back(p.x), y.push_back(p.y), z.push_back(p.z); }
+    size_t size() const { return x.size(); }
+};
+
+// The primary marcher (march.h, sphereTrace) with its settings.
+struct CameraMarch {
+    double epsilon = 0.25;     // in pixel footprints
+    double pixelAngle = 1e-3;  // footprint per unit of t
+    int maxSteps = 5000;
+    double relaxation = 1;  // sphereTrace's over-relaxation (march.h); ignored by cones
+    // Cone marching: each ray stands for a cone of radius pixelAngle * t (plus the ray's
+    // spread, RayBatch::spread) about it, steps by the
+    // estimate less that radius (so the ball of the estimate covers the cone's next stretch),
+    // and ends (Grazing) as soon as the estimate is below epsilon radii (epsilon > 1, so that
+    // steps stay at least (epsilon - 1) radii long): no confirmation. A miss before maxSteps
+    // means no ray inside the cone meets the set before tFar.
+    bool cone = false;
+};
+enum class TraceEnd : uint8_t { Miss, Inside, Grazing };
+struct TraceResult {
+    TraceEnd end = TraceEnd::Miss;
+    double t = 0;         // where it ended
+    double tOutside = 0;  // the last point known outside (t itself for a Grazing ray; the
+                          // point before for a Grazing cone)
+    int steps = 0;
+};
+void traceCameraRays(const LaneFractal& fractal, const CameraMarch& march, const RayBatch& rays,
+                     std::vector<TraceResult>& results, LaneCounters& counters);
+
+// The key light's shadow rays (shade.h, Shader::shadow): visibility in [0, 1] before the
+// smoothstep, 0 where the set is hit.
+struct ShadowMarch {
+    double minimumStep = 1e-4;
+    double softness = 12;
+    bool soft = true;
+    int maxSteps = 256;
+    // Over-relaxation (Shader::shadowRelaxation): the factor where the estimate neither grows
+    // nor falls, and its cap.
+    double relaxation = 1;
+    double maxRelaxation = 1;
+};
+void traceShadowRays(const LaneFractal& fractal, const ShadowMarch& march, const RayBatch& rays,
+                     std::vector<double>& visibility, LaneCounters& counters);
+
+// The distance estimate at each point (distance scaled for 3D steps, as Fractal::estimate).
+struct PointEstimate {
+    double distance = 0;
+    bool inside = false;
+    int iterations = 0;        // as DistanceEstimate::iterations
+    double trap = 0;           // min |z_n| before escape
+    double radiusSquared = 0;  // |z|^2 where the estimate was taken
+};
+void estimatePoints(const LaneFractal& fractal, const PointBatch& points,
+                    std::vector<PointEstimate>& results, LaneCounters& counters);
+// Only the distances (0 inside), without the orbit: cheaper where the bailout certifies escape
+// (ambient occlusion needs no more).
+void estimateDistances(const LaneFractal& fractal, const PointBatch& points,
+                       std::vector<double>& distances, LaneCounters& counters);
+
+// The M of a point's analytic normal (JuliaSet::gradientIterations): the iterations of its
+// estimate, maxIterations - 1 for points inside.
+inline int gradientIterationsOf(const PointEstimate& estimate, int maxIterations) {
+    return estimate.inside ? maxIterations - 1 : estimate.iterations;
+}
+// Unit outward normals from the analytic gradient of |z_M|^2 (Fractal::normal), M given per
+// point (gradientIterationsOf its estimate).
+void potentialNormals(const LaneFractal& fractal, const PointBatch& points,
+                      const std::vector<int>& iterations, std::vector<Vector3d>& normals,
+                      LaneCounters& counters);
+// The same normals for shading that needs nothing else of the estimates (no orbit colouring):
+// where the lanes iterate z^2 + c in three numbers (float, certified bailout), the gradient's
+// own iterates stop where the estimate would, and no estimate is taken.
+void potentialNormalsAlone(const LaneFractal& fractal, const PointBatch& points,
+                           std::vector<Vector3d>& normals, LaneCounters& counters);
+
+// The SIMD target the dispatcher chose on this CPU, e.g. "AVX2".
+const char* laneTargetName();
+
+}  // namespace quaternia

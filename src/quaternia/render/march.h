@@ -1,0 +1,89 @@
+// Finding where a ray first meets the object, two ways:
+// - fixedStepMarch: the seed paper's Algorithm 2, the reference. Samples at a fixed step delta
+//   inside the bounding sphere, each tested for membership by iteration; the first inside
+//   sample is refined by bisection against the last outside one.
+// - sphereTrace: the fast path. Steps by the distance estimate, which cannot cross the set, from
+//   the bounding sphere (the estimate overshoots far away, distance.h) until it falls below
+//   epsilon times the pixel footprint at t, then confirms membership with steps of a fifth of
+//   a footprint: the drawn surface is K_N's own (its epsilon-offset only for grazing rays),
+//   and no feature wider than a pixel is skipped.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+#include "quaternia/algebra/vecmath.h"
+#include "quaternia/fractal/fractal.h"
+#include "quaternia/render/lanes/march_rules.h"
+#include "quaternia/scene/scene.h"
+
+namespace quaternia {
+
+struct RayInterval {
+    double tNear, tFar;
+};
+// Where the ray is inside the ball of the given radius about the origin, for t >= 0.
+inline std::optional<RayInterval> intersectSphere(const Ray& ray, double radius) {
+    // |o + t d|^2 = r^2 with |d| = 1: t^2 + 2 b t + c = 0.
+    double b = dot(ray.origin, ray.direction);
+    double c = dot(ray.origin, ray.origin) - radius * radius;
+    double discriminant = b * b - c;
+    if (discriminant < 0) return std::nullopt;
+    double root = std::sqrt(discriminant);
+    double tFar = -b + root;
+    if (tFar < 0) return std::nullopt;
+    return RayInterval{std::max(0.0, -b - root), tFar};
+}
+
+// kMarchConfirmStep and kMarchConfirmBudget: render/lanes/march_rules.h.
+
+// Over-relaxed steps before confirmation (after Keinert et al. 2014, "Enhanced sphere tracing",
+// with the factor of Balint and Valasek 2018): along a ray the estimate falls almost linearly
+// towards the surface, at a slope (radius - distance) / step seen between consecutive points;
+// if the surface were a plane at that slope, a step of 2 / (1 + slope) estimates would just
+// keep the two balls touching. kMarchRelaxation (< 2) leaves a margin. Where the far point's
+// ball does not reach back to the end of the plain step (the estimate, or in confirmation at
+// least kMarchConfirmStep footprints), the set may lie between them: the march drops the far
+// point and takes the plain step instead, so it crosses nothing that plain steps would not.
+// The length of the step from a point at t whose
+// estimate is `distance`, the point before being at tPrevious with estimate `radius`:
+inline constexpr double kMarchRelaxation = 1.8;  // the default of render.relaxation
+inline double relaxedMarchStep(double relaxation, double t, double tPrevious, double radius,
+                               double distance) {
+    if (!(t > tPrevious && radius > 0)) return distance;
+    const double slope = std::max(0.0, (radius - distance) / (t - tPrevious));
+    return std::max(1.0, relaxation / (1.0 + slope)) * distance;
+}
+
+struct MarchSettings {
+    MarchMethod method = MarchMethod::SphereTracing;
+    double step = 0.002;       // fixed-step delta
+    double epsilon = 0.25;     // in pixel footprints
+    double pixelAngle = 1e-3;  // footprint per unit of t: Camera::pixelFootprint(1)
+    int maxSteps = 5000;
+    double relaxation = kMarchRelaxation;  // 1: plain sphere tracing
+};
+
+struct Hit {
+    double t = 0;
+    Point3d position;
+    // The last point known to be outside K_N (the hit itself for sphere tracing): where the
+    // potential is defined and normals are taken.
+    Point3d outside;
+    DistanceEstimate estimate;
+};
+
+struct MarchResult {
+    std::optional<Hit> hit;
+    int steps = 0;           // distance estimates or membership tests
+    int64_t iterations = 0;  // polynomial evaluations
+};
+
+MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
+MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
+// The method named in the settings.
+MarchResult march(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
+
+}  // namespace quaternia

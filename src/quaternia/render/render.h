@@ -1,0 +1,79 @@
+// Rendering a scene to an image: one camera ray per sample, marched (march.h), shaded
+// (shade.h), averaged per pixel, tiles spread over all cores by the one parallel-for.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+#include "quaternia/image/image.h"
+#include "quaternia/image/png_writer.h"
+#include "quaternia/scene/scene.h"
+#include "quaternia/util/parallel.h"
+
+namespace quaternia {
+
+// How any image is computed (3D renders, plane images): threads, cancellation, progress.
+struct RenderOptions : WorkOptions {
+    bool depth = false;  // also fill RenderResult::depth
+    // Where render.alpha is "opaque": fill RenderResult::samples instead of the image, each
+    // row quantised as soon as its tile has it (while it is in cache), as encodePng would.
+    bool opaqueSamples = false;
+};
+
+struct RenderStats {
+    int64_t rays = 0;  // camera rays (pixels x samples)
+    int64_t hits = 0;
+    int64_t marchSteps = 0;        // distance estimates or membership tests of camera rays
+    int64_t iterations = 0;        // polynomial evaluations of camera rays
+    int64_t shadingEstimates = 0;  // shadow and occlusion estimates
+    // The SIMD path's lanes (camera and shading): polynomial evaluations in live lanes and lane
+    // slots; utilisation = laneIterations / laneSlots. 0 on the scalar path.
+    int64_t laneIterations = 0;
+    int64_t laneSlots = 0;
+    const char* engine = "";  // the SIMD target (e.g. "AVX2") or "scalar"
+    int threads = 0;
+    double seconds = 0;
+};
+
+struct RenderResult {
+    // Display values (exposure and gamma applied). With render.alpha = "coverage", alpha is the
+    // fraction of a pixel's samples that hit and colour the mean of the hit samples (straight
+    // alpha), or the background where nothing was hit; with "opaque", the samples are
+    // composited over the background and alpha is 1.
+    Image image;
+    // Depth pass when asked for: the mean hit distance scaled so that 0 is the near side of the
+    // bounding sphere and 1 its far side; 1 where nothing was hit.
+    GrayImage depth;
+    // With RenderOptions::opaqueSamples and render.alpha = "opaque", in place of `image` (which
+    // stays empty): its RGB samples at the scene's bit depth, as PNG stores them (png_writer.h),
+    // the very samples that encodePng(image, bitDepth, true) writes. A quarter of the memory
+    // of the float image at 8 bits, and no second pass over it.
+    PngFormat samplesFormat;
+    std::vector<uint8_t, ZeroedAllocator<uint8_t>> samples;
+    RenderStats stats;
+    bool completed = true;  // false if cancelled
+};
+
+// Validates the scene (throws UserError naming the bad key) before any work starts.
+RenderResult render(const Scene& scene, const RenderOptions& options = {});
+
+// The parallel-for settings of a width x height image: the options' threads resolved, their
+// cancel flag, their progress (if set) called with the fraction of tiles done, and square tiles
+// of 64 pixels where the image has at least kMinimumHugeTiles of them, else of 32 pixels where
+// it has at least kMinimumLargeTiles, else 16. Large tiles make long batches for the SIMD path
+// (each batch ends with lanes idling while its last rays finish: 64-pixel tiles render 1080p
+// frames 2.6% faster than 32); small images need the small tiles to keep every thread busy, and
+// kMinimumHugeTiles still gives 64 cores about 8 tiles each. The size depends on the image
+// alone, so the picture is the same for any number of threads (it is the same for any of these
+// sizes too: they are multiples of the cone blocks, render_packets.h).
+inline constexpr int64_t kMinimumLargeTiles = 128;
+inline constexpr int64_t kMinimumHugeTiles = 480;
+ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int height);
+
+// Sample k of n within a pixel, in [0, 1)^2: a stratified grid jittered by a hash of the pixel,
+// so images are reproducible; the single sample is the pixel centre.
+std::array<double, 2> samplePosition(int k, int n, int px, int py);
+
+}  // namespace quaternia

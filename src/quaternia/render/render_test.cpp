@@ -1,0 +1,197 @@
+#include "quaternia/render/render.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <set>
+
+#include "quaternia/image/mask_compare.h"
+#include "quaternia/image/png_io.h"
+#include "quaternia/scene/parameters.h"
+#include "quaternia/scene/test_scenes.h"
+#include "quaternia/util/error.h"
+
+namespace quaternia {
+namespace {
+
+using testing::referenceScene;
+using testing::unitBallScene;
+
+// With one sample a pixel is hit or not: alpha is exactly 0 or 1 (0 or 255 in the PNG).
+// Tiles: 64 or 32 pixels where the image has enough of them, 16 for small images (explorer
+// previews), whatever the thread count, so the picture does not depend on it.
+TEST(Render, TileSizeFollowsTheImageNotTheThreads) {
+    for (int threads : {1, 2, 64}) {
+        WorkOptions work;
+        work.threads = threads;
+        EXPECT_EQ(imageParallelOptions(work, 3840, 2160).tileSize, 64);
+        EXPECT_EQ(imageParallelOptions(work, 1920, 1080).tileSize, 64);
+        EXPECT_EQ(imageParallelOptions(work, 1280, 720).tileSize, 32);
+        EXPECT_EQ(imageParallelOptions(work, 640, 360).tileSize, 32);
+        EXPECT_EQ(imageParallelOptions(work, 160, 90).tileSize, 16);
+        EXPECT_EQ(imageParallelOptions(work, 1, 2000).tileSize, 16);
+        EXPECT_EQ(imageParallelOptions(work, 640, 360).threads, threads);
+    }
+}
+
+TEST(Render, SingleSampleAlphaIsBinary) {
+    RenderResult result = render(unitBallScene(48, 36));
+    int covered = 0;
+    for (const Rgba& pixel : result.image.pixels()) {
+        ASSERT_TRUE(pixel.a == 0.0f || pixel.a == 1.0f);
+        covered += pixel.a == 1.0f;
+    }
+    EXPECT_GT(covered, 100);
+    EXPECT_EQ(result.stats.rays, 48 * 36);
+    EXPECT_EQ(result.stats.hits, covered);
+}
+
+// With n samples alpha is the covered fraction k / n, and edges show fractions.
+TEST(Render, AlphaIsCoverage) {
+    Scene scene = unitBallScene(40, 30);
+    scene.render.samples = 4;
+    RenderResult result = render(scene);
+    std::set<float> seen;
+    for (const Rgba& pixel : result.image.pixels()) {
+        float quarters = pixel.a * 4;
+        ASSERT_FLOAT_EQ(quarters, std::round(quarters));
+        seen.insert(pixel.a);
+    }
+    EXPECT_TRUE(seen.count(0.0f) && seen.count(1.0f));
+    EXPECT_GE(seen.size(), 3u);  // some edge pixel is partly covered
+}
+
+// The unit ball seen from (0, 0, -3): its silhouette is the disc of angular radius asin(1/3).
+TEST(Render, UnitBallSilhouetteIsTheAnalyticDisc) {
+    Scene scene = unitBallScene(101, 101);
+    scene.camera.fovDegrees = 45;
+    RenderResult result = render(scene);
+    Mask rendered = maskFromAlpha(result.image);
+    Mask analytic{101, 101, std::vector<uint8_t>(101 * 101)};
+    const double halfWidth = std::tan(45.0 * M_PI / 360.0);
+    const double tanRadius = std::tan(std::asin(1.0 / 3.0));
+    for (int y = 0; y < 101; ++y) {
+        for (int x = 0; x < 101; ++x) {
+            double u = ((x + 0.5) / 101 - 0.5) * 2 * halfWidth;
+            double v = (0.5 - (y + 0.5) / 101) * 2 * halfWidth;
+            analytic.inside[y * 101 + x] = u * u + v * v < tanRadius * tanRadius;
+        }
+    }
+    MaskComparison comparison = compareMasks(rendered, analytic);
+    EXPECT_GT(comparison.iou, 0.98);
+    EXPECT_EQ(comparison.farFromA, 0);
+    EXPECT_EQ(comparison.farFromB, 0);
+}
+
+TEST(Render, DepthPassIsZeroAtNearestPointOfUnitBall) {
+    Scene scene = unitBallScene(21, 21);
+    RenderOptions options;
+    options.depth = true;
+    RenderResult result = render(scene, options);
+    // Camera at distance 3, bounding radius 1: depth 0 at t = 2, the front of the ball.
+    EXPECT_NEAR(result.depth.at(10, 10), 0.0, 5e-3);
+    EXPECT_EQ(result.depth.at(0, 0), 1.0f);
+    EXPECT_GT(result.depth.at(10, 6), result.depth.at(10, 10));
+}
+
+TEST(Render, CancelStopsEarly) {
+    std::atomic<bool> cancel{true};
+    RenderOptions options;
+    options.cancel = &cancel;
+    RenderResult result = render(unitBallScene(64, 64), options);
+    EXPECT_FALSE(result.completed);
+    EXPECT_LT(result.stats.rays, 64 * 64);
+}
+
+TEST(Render, ProgressReachesOne) {
+    RenderOptions options;
+    double last = -1;
+    bool monotonic = true;
+    options.progress = [&](double fraction) {
+        monotonic = monotonic && fraction >= last;
+        last = fraction;
+    };
+    render(unitBallScene(64, 48), options);
+    EXPECT_TRUE(monotonic);
+    EXPECT_DOUBLE_EQ(last, 1.0);
+}
+
+TEST(Render, SameImageWithAnyThreadCount) {
+    Scene scene = referenceScene("case01_sqr_A");
+    scene.render.width = 64;
+    scene.render.height = 48;
+    scene.render.samples = 2;
+    RenderOptions one, three;
+    one.threads = 1;
+    three.threads = 3;
+    RenderResult a = render(scene, one), b = render(scene, three);
+    for (size_t k = 0; k < a.image.pixels().size(); ++k) {
+        ASSERT_EQ(a.image.pixels()[k].r, b.image.pixels()[k].r);
+        ASSERT_EQ(a.image.pixels()[k].a, b.image.pixels()[k].a);
+    }
+}
+
+// Opaque frames rendered straight to PNG samples (RenderOptions::opaqueSamples) encode to the
+// very bytes of the float image's PNG, on both engines, at both bit depths, with a background of
+// one colour and a gradient; frames with coverage alpha still come as the image.
+TEST(Render, OpaqueSamplesAreTheImagesPngSamples) {
+    Scene scene = referenceScene("case01_sqr_A");
+    scene.render.width = 70;  // tiles of 16 that do not divide the image
+    scene.render.height = 45;
+    scene.render.alpha = AlphaMode::Opaque;
+    RenderOptions asSamples;
+    asSamples.opaqueSamples = true;
+    for (RenderEngine engine : {RenderEngine::Simd, RenderEngine::Scalar}) {
+        for (int bitDepth : {8, 16}) {
+            for (bool uniform : {true, false}) {
+                scene.render.engine = engine;
+                scene.render.bitDepth = bitDepth;
+                scene.shading.backgroundTop =
+                    uniform ? scene.shading.backgroundBottom : Color(0.9, 0.2, 0.1);
+                const RenderResult image = render(scene, RenderOptions{});
+                const RenderResult samples = render(scene, asSamples);
+                EXPECT_EQ(samples.image.width(), 0);
+                ASSERT_EQ(samples.samplesFormat.colorType, PngColorType::Rgb);
+                EXPECT_EQ(writePngBytes(samples.samplesFormat, samples.samples),
+                          encodePng(image.image, bitDepth, true))
+                    << bitDepth << " bits, uniform background " << uniform;
+            }
+        }
+    }
+    scene.render.alpha = AlphaMode::Coverage;
+    const RenderResult coverage = render(scene, asSamples);
+    EXPECT_TRUE(coverage.samples.empty());
+    EXPECT_EQ(coverage.image.width(), scene.render.width);
+}
+
+TEST(Render, RejectsBadFormulaBeforeWork) {
+    Scene scene = unitBallScene(8, 8);
+    scene.fractal.formula = "z^2 + x";
+    try {
+        render(scene);
+        FAIL() << "expected a UserError";
+    } catch (const UserError& e) {
+        EXPECT_EQ(e.key(), "fractal.formula");
+        EXPECT_NE(std::string(e.what()).find("column 7"), std::string::npos) << e.what();
+    }
+}
+
+// Algorithm 2 (fixed steps, membership by iteration) and sphere tracing find the same surface.
+TEST(Render, FixedStepAndSphereTracingSilhouettesAgree) {
+    for (const char* id : {"case01_sqr_A", "case03_sqr_C", "case05_sqr_E", "case08_cube_F"}) {
+        Scene scene = referenceScene(id);
+        scene.render.width = 200;
+        scene.render.height = 150;
+        RenderResult traced = render(scene);
+        scene.render.method = MarchMethod::FixedStep;
+        scene.render.step = 0.001;
+        RenderResult stepped = render(scene);
+        MaskComparison comparison =
+            compareMasks(maskFromAlpha(traced.image), maskFromAlpha(stepped.image));
+        EXPECT_GE(comparison.iou, 0.99) << id;
+        std::printf("%s fixed-step vs sphere: %s\n", id, describe(comparison).c_str());
+    }
+}
+
+}  // namespace
+}  // namespace quaternia

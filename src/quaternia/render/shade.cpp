@@ -1,0 +1,214 @@
+#include "quaternia/render/shade.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "quaternia/render/lanes/shading_lanes.h"
+
+namespace quaternia {
+namespace {
+
+double clamp01(double v) {
+    return std::clamp(v, 0.0, 1.0);
+}
+double smoothstep(double a, double b, double v) {
+    double t = clamp01((v - a) / (b - a));
+    return t * t * (3 - 2 * t);
+}
+
+}  // namespace
+
+Shader::Shader(const ShadingSettings& settings, const Fractal& fractal)
+    : settings_(settings),
+      fractal_(fractal),
+      lightDirection_(normalize(settings.lightDirection)),
+      fillDirection_(normalize(settings.fillDirection)),
+      // Occlusion is probed over a few percent of the object's size: the scale of its folds.
+      occlusionStep_(0.025 * fractal.boundingRadius()),
+      highlightCutoff_(std::pow(1e-7, 1 / std::max(settings.shininess, 1e-3))) {
+    // Weights 0.7^(k-1), normalised.
+    double weight = 1, weights = 0;
+    for (int k = 1; k <= kOcclusionSamples; ++k) {
+        occlusionScale_[k - 1] = 2 / occlusionHeight(k);
+        occlusionWeight_[k - 1] = weight;
+        weights += weight;
+        weight *= 0.7;
+    }
+    for (double& w : occlusionWeight_)
+        w /= weights;
+}
+
+double Shader::shadowMinimumStep() const {
+    return 1e-4 * fractal_.boundingRadius();
+}
+
+double Shader::visibilityFromMarch(double marched) const {
+    return settings_.shadows == Shadows::Soft ? smoothstep(0, 1, marched) : marched;
+}
+
+double Shader::shadow(const Point3d& p, ShadingStats& stats) const {
+    if (settings_.shadows == Shadows::None) return 1;
+    Ray ray{p, lightDirection_};
+    auto interval = intersectSphere(ray, fractal_.boundingRadius());
+    if (!interval) return 1;
+    const double minimumStep = shadowMinimumStep();
+    const bool soft = settings_.shadows == Shadows::Soft;
+    double visibility = 1;
+    double t = 0;
+    // Over-relaxed sphere tracing (Keinert et al. 2014): steps of shadowRelaxation() times the
+    // estimate while the balls of consecutive points overlap; where they do not, the step may
+    // have jumped over the set, so go back to the plain step.
+    double relaxation = 1, radius = 0, step = 0;
+    for (int steps = 0; steps < kShadowSteps && t < interval->tFar; ++steps) {
+        DistanceEstimate e = fractal_.estimate(ray.at(t));
+        ++stats.estimates;
+        stats.iterations += e.iterations;
+        if (relaxation > 1 && radius + e.distance < step) {
+            t += radius - step;
+            step = radius;
+            relaxation = 1;
+            continue;
+        }
+        if (e.inside || e.distance < 0.5 * minimumStep) return 0;
+        // The penumbra: how nearly the shadow ray grazed the set relative to how far it went.
+        if (soft && t > 0)
+            visibility = std::min(visibility, settings_.shadowSoftness * e.distance / t);
+        const double newRadius = std::max(e.distance, minimumStep);
+        relaxation = shadowRelaxation(radius, newRadius, step);
+        radius = newRadius;
+        step = relaxation * radius;
+        t += step;
+    }
+    return visibilityFromMarch(soft ? visibility : 1);
+}
+
+double Shader::ambientOcclusion(const Point3d& p, const Vector3d& normal,
+                                ShadingStats& stats) const {
+    double distances[kOcclusionSamples];
+    for (int k = 1; k <= kOcclusionSamples; ++k) {
+        DistanceEstimate e = fractal_.estimate(p + normal * occlusionHeight(k));
+        ++stats.estimates;
+        stats.iterations += e.iterations;
+        distances[k - 1] = e.distance;
+    }
+    return occlusionFromEstimates(distances);
+}
+
+double Shader::occlusionFromEstimates(const double* distances) const {
+    // Compare the estimate at a few heights h above the surface with h itself. The estimate
+    // runs at 0.5 to 1 times the true distance near the set, so a ratio of 0.5 counts as open.
+    // The weights fall by 0.7 per sample (occlusionWeight_), and sum to 1.
+    double open = 0;
+    for (int k = 0; k < kOcclusionSamples; ++k)
+        open += occlusionWeight_[k] * clamp01(distances[k] * occlusionScale_[k]);
+    return open;
+}
+
+double Shader::ambientFromOpenness(double open) const {
+    return 1 - settings_.ambientOcclusion * (1 - open);
+}
+
+Color Shader::albedo(const DistanceEstimate& estimate) const {
+    switch (settings_.coloring) {
+        case Coloring::Solid:
+            return settings_.baseColor;
+        case Coloring::Iteration: {
+            double phase = 0.5 + 0.5 * std::cos(0.45 * estimate.smoothIteration);
+            return lerp(settings_.baseColor, settings_.accentColor, phase);
+        }
+        case Coloring::OrbitTrap:
+        default: {
+            // The orbit's closest approach to 0, relative to the set's size.
+            double v = smoothstep(0.15, 0.75, estimate.trap / fractal_.set().escapeRadius());
+            return lerp(settings_.accentColor, settings_.baseColor, v);
+        }
+    }
+}
+
+Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats) const {
+    SurfaceSample sample;
+    sample.normal = fractal_.normal(hit.outside);
+    if (dot(sample.normal, ray.direction) > 0) sample.normal = -sample.normal;  // a thin sheet
+    sample.albedo = albedo(hit.estimate);
+    sample.visibility = keyDiffuse(sample.normal) > 0
+                            ? shadow(shadowOrigin(hit.outside, sample.normal, footprint), stats)
+                            : 0;
+    sample.occlusion =
+        occlusionEnabled()
+            ? ambientFromOpenness(ambientOcclusion(hit.outside, sample.normal, stats))
+            : 1;
+    return light(sample, ray);
+}
+
+Color Shader::light(const SurfaceSample& sample, const Ray& ray) const {
+    const Vector3d& n = sample.normal;
+    const double key = keyDiffuse(n);
+    Vector3d halfway = normalize(lightDirection_ - ray.direction);
+    const double cosine = dot(n, halfway);
+    double highlight = key > 0 && cosine > highlightCutoff_
+                           ? std::pow(float(cosine), float(settings_.shininess))
+                           : 0;
+    double fillDiffuse = std::max(0.0, dot(n, fillDirection_));
+
+    const Color& base = sample.albedo;
+    Color color = base * settings_.lightColor * (key * sample.visibility);
+    color += settings_.lightColor * (settings_.specular * highlight * sample.visibility);
+    color += base * settings_.fillColor * (fillDiffuse * sample.occlusion);
+    color += base * (settings_.ambient * sample.occlusion);
+    return color;
+}
+
+LightConstants Shader::lightConstants() const {
+    auto put = [](float* out, const Vector3d& v) {
+        out[0] = float(v.x), out[1] = float(v.y), out[2] = float(v.z);
+    };
+    LightConstants k;
+    put(k.light, lightDirection_);
+    put(k.fill, fillDirection_);
+    put(k.lightColor, settings_.lightColor);
+    put(k.fillColor, settings_.fillColor);
+    k.specular = float(settings_.specular);
+    k.shininess = float(settings_.shininess);
+    k.ambient = float(settings_.ambient);
+    k.highlightCutoff = float(highlightCutoff_);
+    return k;
+}
+
+Color Shader::background(const Ray& ray) const {
+    double v = 0.5 + 0.5 * ray.direction.y;
+    return lerp(settings_.backgroundBottom, settings_.backgroundTop, v);
+}
+
+void Shader::backgroundRow(const Vector3d& first, const Vector3d& step, int x0, int count,
+                           float alpha, Rgba* out) const {
+    // The direction's y and its length, as background() takes them from the normalised ray.
+    const float ax = float(first.x), ay = float(first.y), az = float(first.z);
+    const float bx = float(step.x), by = float(step.y), bz = float(step.z);
+    const Color& bottom = settings_.backgroundBottom;
+    const Color& top = settings_.backgroundTop;
+    const float r0 = float(bottom.x), g0 = float(bottom.y), b0 = float(bottom.z);
+    const float dr = float(top.x - bottom.x), dg = float(top.y - bottom.y),
+                db = float(top.z - bottom.z);
+    for (int i = 0; i < count; ++i) {
+        const float px = float(x0 + i);
+        const float x = ax + px * bx, y = ay + px * by, z = az + px * bz;
+        const float v = 0.5f + 0.5f * y / std::sqrt(x * x + y * y + z * z);
+        out[i] = Rgba{r0 + v * dr, g0 + v * dg, b0 + v * db, alpha};
+    }
+}
+
+void Shader::toDisplay(Rgba* pixels, size_t count) const {
+    static_assert(sizeof(Rgba) == 4 * sizeof(float), "Rgba is four packed floats");
+    encodeDisplay(&pixels->r, count, float(settings_.exposure), float(1.0 / settings_.gamma));
+}
+
+Color Shader::toDisplay(const Color& linear) const {
+    // In float: the result goes to 8 or 16 bits, and powf is several times faster than pow.
+    const float inverseGamma = float(1.0 / settings_.gamma);
+    auto encode = [&](double v) {
+        return double(std::pow(float(clamp01(v * settings_.exposure)), inverseGamma));
+    };
+    return {encode(linear.x), encode(linear.y), encode(linear.z)};
+}
+
+}  // namespace quaternia

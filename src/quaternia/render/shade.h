@@ -1,0 +1,117 @@
+// Surface shading of a hit: a key light with Blinn-Phong highlights and DE soft shadows
+// (Quilez's penumbra estimate min k h / t along the shadow ray), a shadowless fill light,
+// ambient light darkened by ambient occlusion from a few distance estimates along the normal,
+// and an albedo coloured by the orbit (orbit trap or smooth escape count). Colours are linear;
+// toDisplay() applies exposure and gamma.
+#pragma once
+
+#include <algorithm>
+#include <array>
+
+#include "quaternia/fractal/fractal.h"
+#include "quaternia/image/image.h"
+#include "quaternia/render/lanes/shading_lanes.h"
+#include "quaternia/render/march.h"
+#include "quaternia/scene/scene.h"
+
+namespace quaternia {
+
+struct ShadingStats {
+    int64_t estimates = 0;   // extra distance estimates (shadow and occlusion)
+    int64_t iterations = 0;  // their polynomial evaluations
+};
+
+// What lighting a hit needs beyond its position: the scalar path computes these ray by ray, the
+// SIMD path (render_packets.h) in batches; both light them with Shader::light.
+struct SurfaceSample {
+    Vector3d normal;  // unit, facing the viewer
+    Color albedo;
+    double visibility = 1;  // of the key light, after the penumbra's smoothstep
+    double occlusion = 1;   // ambient light reaching the point, ambient occlusion applied
+};
+
+class Shader {
+  public:
+    Shader(const ShadingSettings& settings, const Fractal& fractal);
+
+    // Linear colour of the surface at `hit`, seen along `ray`. `footprint` is the pixel
+    // footprint at the hit, the scale of the offsets that leave the surface.
+    Color shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats) const;
+    // The background seen along a ray that misses: a vertical gradient.
+    Color background(const Ray& ray) const;
+    // background() for the pixel centres px = x0 .. x0 + count - 1 of one camera row
+    // (Camera::rowDirections), in float, with the given alpha: a loop the compiler vectorises.
+    void backgroundRow(const Vector3d& first, const Vector3d& step, int x0, int count, float alpha,
+                       Rgba* out) const;
+    // Visibility of the key light from p in [0, 1] (1 = lit).
+    double shadow(const Point3d& p, ShadingStats& stats) const;
+    // 1 = open, 0 = fully occluded.
+    double ambientOcclusion(const Point3d& p, const Vector3d& normal, ShadingStats& stats) const;
+    Color albedo(const DistanceEstimate& estimate) const;
+    // Whether albedo() reads the estimate's smoothIteration (two logarithms to compute).
+    bool albedoUsesSmoothIteration() const { return settings_.coloring == Coloring::Iteration; }
+    // Whether albedo() reads the estimate at all (a solid colour does not).
+    bool albedoUsesOrbit() const { return settings_.coloring != Coloring::Solid; }
+
+    // The pieces both paths share. The key light's diffuse term (0 where it does not reach the
+    // front of the surface, and no shadow ray is needed).
+    double keyDiffuse(const Vector3d& normal) const {
+        return std::max(0.0, dot(normal, lightDirection_));
+    }
+    // Where the shadow ray starts: a few footprints off the surface so that it does not hit the
+    // surface it leaves.
+    Point3d shadowOrigin(const Point3d& surface, const Vector3d& normal, double footprint) const {
+        return surface + normal * (2 * footprint + 1e-6 * fractal_.boundingRadius());
+    }
+    // The marching settings of shadow rays (Shadows::None: no shadow rays at all).
+    Shadows shadows() const { return settings_.shadows; }
+    double shadowMinimumStep() const;
+    double shadowSoftness() const { return settings_.shadowSoftness; }
+    const Vector3d& lightDirection() const { return lightDirection_; }
+    // Shadow rays: at most kShadowSteps estimates, over-relaxed steps (shadow()).
+    static constexpr int kShadowSteps = 256;
+    static constexpr double kShadowRelaxation = 1.6;
+    static constexpr double kShadowMaxRelaxation = 4;
+    // The factor of the next shadow step, from the last step and the radii (estimates, at least
+    // the minimum step) at both its ends. As sphereTrace's (march.h), kShadowRelaxation / (1 +
+    // slope), but the slope may be negative: a shadow ray leaves the surface, its estimate grows
+    // with t, and consecutive balls still touch after steps of many estimates (up to 2 / (1 -
+    // growth)); capped at kShadowMaxRelaxation.
+    static double shadowRelaxation(double radius, double newRadius, double step) {
+        if (!(step > 0)) return kShadowRelaxation;
+        const double slope = std::max(-0.8, (radius - newRadius) / step);
+        return std::clamp(kShadowRelaxation / (1 + slope), 1.0, kShadowMaxRelaxation);
+    }
+    // The visibility a shadow ray's march leaves (0 blocked; the running penumbra or 1) as light.
+    double visibilityFromMarch(double marched) const;
+    // Ambient occlusion: kOcclusionSamples estimates at occlusionHeight(1..n) along the normal.
+    static constexpr int kOcclusionSamples = 5;
+    bool occlusionEnabled() const { return settings_.ambientOcclusion > 0; }
+    double occlusionHeight(int k) const { return occlusionStep_ * k; }
+    // Openness (1 open, 0 occluded) from those estimates (distances[k - 1] at height k), and the
+    // ambient light it lets through at the configured strength.
+    double occlusionFromEstimates(const double* distances) const;
+    double ambientFromOpenness(double open) const;
+    // The lit colour of a surface sample seen along `ray`.
+    Color light(const SurfaceSample& sample, const Ray& ray) const;
+    // light()'s constants for its SIMD form (shading_kernels.h, lightSurfaces).
+    LightConstants lightConstants() const;
+    // Exposure, clamp to [0, 1] and gamma: the values written to an 8- or 16-bit image.
+    Color toDisplay(const Color& linear) const;
+    // The same for the colours of many pixels in place, alpha kept (SIMD, shading_kernels.h;
+    // equal to float rounding).
+    void toDisplay(Rgba* pixels, size_t count) const;
+
+  private:
+    ShadingSettings settings_;
+    const Fractal& fractal_;
+    Vector3d lightDirection_, fillDirection_;
+    double occlusionStep_;
+    // occlusionFromEstimates' factors: 2 / height and the normalised weight of each sample.
+    std::array<double, kOcclusionSamples> occlusionScale_, occlusionWeight_;
+    // Below this cosine the highlight cos^shininess is under 1e-7, far below one step of a
+    // 16-bit channel: light() skips the power there.
+    double highlightCutoff_;
+};
+
+}  // namespace quaternia

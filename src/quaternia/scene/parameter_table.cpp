@@ -1,0 +1,306 @@
+// The parameter table: every scene setting declared once, with its name, type, default, range
+// and help. This one table drives scene files, --set, --help, validation and (later) the
+// explorer's controls; parameters.cpp holds the machinery that reads it.
+#include <utility>
+
+#include "quaternia/scene/parameters.h"
+
+namespace quaternia {
+namespace {
+
+// ---- Typed helpers: each builds one table entry bound to one Scene field -----------------------
+
+Parameter makeParameter(std::string section, std::string key, ParameterType type,
+                        ParameterValue defaultValue, double minimum, double maximum,
+                        std::string help) {
+    Parameter p;
+    p.section = std::move(section);
+    p.key = std::move(key);
+    p.type = type;
+    p.defaultValue = std::move(defaultValue);
+    p.minimum = minimum;
+    p.maximum = maximum;
+    p.help = std::move(help);
+    return p;
+}
+
+template <typename Section>
+Parameter realParameter(std::string section, std::string key, Section Scene::*part,
+                        double Section::*field, double defaultValue, double minimum, double maximum,
+                        std::string help) {
+    Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Real,
+                                defaultValue, minimum, maximum, std::move(help));
+    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
+        (scene.*part).*field = std::get<double>(value);
+    };
+    p.read = [part, field](const Scene& scene) -> ParameterValue { return (scene.*part).*field; };
+    return p;
+}
+
+// `allowed`, if not empty, lists the only values allowed within [minimum, maximum].
+template <typename Section>
+Parameter integerParameter(std::string section, std::string key, Section Scene::*part,
+                           int Section::*field, int64_t defaultValue, int64_t minimum,
+                           int64_t maximum, std::string help, std::vector<int64_t> allowed = {}) {
+    Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Integer,
+                                defaultValue, double(minimum), double(maximum), std::move(help));
+    p.allowedIntegers = std::move(allowed);
+    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
+        (scene.*part).*field = int(std::get<int64_t>(value));  // the range makes it fit
+    };
+    p.read = [part, field](const Scene& scene) -> ParameterValue {
+        return int64_t{(scene.*part).*field};
+    };
+    return p;
+}
+
+// Text whose length in bytes lies in [minimumLength, maximumLength].
+template <typename Section>
+Parameter textParameter(std::string section, std::string key, Section Scene::*part,
+                        std::string Section::*field, std::string defaultValue, int minimumLength,
+                        int maximumLength, std::string help) {
+    Parameter p =
+        makeParameter(std::move(section), std::move(key), ParameterType::Text,
+                      std::move(defaultValue), minimumLength, maximumLength, std::move(help));
+    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
+        (scene.*part).*field = std::get<std::string>(value);
+    };
+    p.read = [part, field](const Scene& scene) -> ParameterValue { return (scene.*part).*field; };
+    return p;
+}
+
+// An enum chosen by name; `options` maps each word to its enum value, in display order.
+template <typename Section, typename Enum>
+Parameter choiceParameter(std::string section, std::string key, Section Scene::*part,
+                          Enum Section::*field, std::string defaultValue,
+                          std::vector<std::pair<std::string, Enum>> options, std::string help) {
+    Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Choice,
+                                std::move(defaultValue), 0, 0, std::move(help));
+    for (const auto& option : options)
+        p.choices.push_back(option.first);
+    p.apply = [part, field, options](Scene& scene, const ParameterValue& value) {
+        const auto& word = std::get<std::string>(value);
+        for (const auto& [name, enumValue] : options)
+            if (name == word) (scene.*part).*field = enumValue;
+    };
+    p.read = [part, field, options](const Scene& scene) -> ParameterValue {
+        for (const auto& [name, enumValue] : options)
+            if (enumValue == (scene.*part).*field) return name;
+        return std::string("?");  // an enum value the table does not name; checkedValue rejects it
+    };
+    return p;
+}
+
+// A vector of N reals stored in any field with operator[] (Vector3d, Quaternion in (1, i, j, k)
+// order, std::array); [minimum, maximum] bounds each component.
+template <std::size_t N, typename Section, typename Field>
+Parameter vectorParameter(std::string section, std::string key, Section Scene::*part,
+                          Field Section::*field, const double (&defaultValue)[N], double minimum,
+                          double maximum, std::string help) {
+    static_assert(N == 2 || N == 3 || N == 4 || N == 6);
+    ParameterType type = N == 2   ? ParameterType::Vector2
+                         : N == 3 ? ParameterType::Vector3
+                         : N == 4 ? ParameterType::Vector4
+                                  : ParameterType::Vector6;
+    Parameter p = makeParameter(std::move(section), std::move(key), type,
+                                std::vector<double>(defaultValue, defaultValue + N), minimum,
+                                maximum, std::move(help));
+    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
+        const auto& v = std::get<std::vector<double>>(value);
+        for (std::size_t i = 0; i < N; ++i)
+            ((scene.*part).*field)[int(i)] = v[i];
+    };
+    p.read = [part, field](const Scene& scene) -> ParameterValue {
+        std::vector<double> v(N);
+        for (std::size_t i = 0; i < N; ++i)
+            v[i] = ((scene.*part).*field)[int(i)];
+        return v;
+    };
+    return p;
+}
+
+}  // namespace
+
+std::vector<Parameter> buildParameterTable() {
+    using S = Scene;
+    using F = FractalSettings;
+    using L = SliceSettings;
+    using C = CameraSettings;
+    using R = RenderSettings;
+    using H = ShadingSettings;
+    using P = PlaneSettings;
+    using M = MeshSettings;
+    return {
+        // [fractal]
+        textParameter("fractal", "formula", &S::fractal, &F::formula, "z^2 + c", 1, 1000,
+                      "Quaternion polynomial in z iterated as z <- p(z) (eq. 2.10); c stands for "
+                      "fractal.c, e.g. \"z^3 + c\" or \"i*z*j*z + c\""),
+        vectorParameter("fractal", "c", &S::fractal, &F::c, {-0.2, 0.6, 0.2, 0.2}, -10, 10,
+                        "The constant c as its (1, i, j, k) components; each c is another "
+                        "Julia set"),
+        integerParameter("fractal", "max_iterations", &S::fractal, &F::maxIterations, 12, 1, 100000,
+                         "Iterations before a point that has not escaped counts as inside; more "
+                         "is finer detail and slower"),
+        realParameter("fractal", "bailout", &S::fractal, &F::bailout, 0, 0, 1e6,
+                      "A point escapes once |z| > bailout; 0 uses the polynomial's own escape "
+                      "radius"),
+        // [slice]
+        vectorParameter("slice", "normal", &S::slice, &L::normal, {0, 0, 0, 1}, -1000, 1000,
+                        "Normal s = (x, y, z, w) of the 4D hyperplane s . q = distance that is "
+                        "drawn, as POV-Ray's slice; w must not be 0"),
+        realParameter("slice", "distance", &S::slice, &L::distance, 0, -100, 100,
+                      "Offset of the slice hyperplane along its normal; sweeping it morphs "
+                      "through the 4D set"),
+        vectorParameter("slice", "left", &S::slice, &L::left, {1, 0, 0, 0}, -1000, 1000,
+                        "Quaternion l (1, i, j, k), made unit: a point p is drawn iff "
+                        "l * s(p) * r is in the set"),
+        vectorParameter("slice", "right", &S::slice, &L::right, {1, 0, 0, 0}, -1000, 1000,
+                        "Quaternion r (1, i, j, k), made unit: a point p is drawn iff "
+                        "l * s(p) * r is in the set"),
+        vectorParameter("slice", "angles", &S::slice, &L::anglesDegrees, {0, 0, 0, 0, 0, 0}, -360,
+                        360,
+                        "Extra 4D rotations of the slice in degrees, in the planes (1,i), "
+                        "(1,j), (1,k), (i,j), (i,k), (j,k)"),
+        // [camera]
+        vectorParameter("camera", "position", &S::camera, &C::position, {1.25, 1.875, -5}, -1e4,
+                        1e4, "Camera location in world space (POV-Ray's location)"),
+        vectorParameter("camera", "look_at", &S::camera, &C::lookAt, {0, 0, 0}, -1e4, 1e4,
+                        "The point the camera looks at, drawn at the image centre"),
+        vectorParameter("camera", "up", &S::camera, &C::up, {0, 1, 0}, -1e4, 1e4,
+                        "Sky vector, the image's up direction; must not be parallel to the view "
+                        "direction"),
+        realParameter("camera", "fov", &S::camera, &C::fovDegrees, 45, 0.01, 179,
+                      "Horizontal field of view in degrees"),
+        // [render]
+        integerParameter("render", "width", &S::render, &R::width, 1280, 1, 16384,
+                         "Image width in pixels"),
+        integerParameter("render", "height", &S::render, &R::height, 720, 1, 16384,
+                         "Image height in pixels"),
+        integerParameter("render", "samples", &S::render, &R::samples, 4, 1, 1024,
+                         "Stratified samples per pixel (anti-aliasing); 1 is one ray through "
+                         "each pixel centre"),
+        choiceParameter(
+            "render", "method", &S::render, &R::method, "sphere",
+            {{"sphere", MarchMethod::SphereTracing}, {"fixed-step", MarchMethod::FixedStep}},
+            "Ray marcher: sphere tracing steps by the distance estimate, fixed-step "
+            "tests a point every render.step (Algorithm 2)"),
+        realParameter("render", "step", &S::render, &R::step, 0.002, 1e-6, 1,
+                      "Step length of the fixed-step marcher in world units; smaller finds "
+                      "thinner parts, more slowly"),
+        realParameter("render", "epsilon", &S::render, &R::epsilon, 0.25, 1e-4, 10,
+                      "Sphere tracing stops where the distance estimate is below epsilon times "
+                      "the pixel footprint"),
+        realParameter("render", "relaxation", &S::render, &R::relaxation, 1.8, 1, 1.95,
+                      "Sphere tracing's over-relaxation: steps of up to this many estimates, "
+                      "checked against the plain step and taken back where they could skip "
+                      "anything; 1 steps plainly"),
+        integerParameter("render", "max_steps", &S::render, &R::maxSteps, 5000, 1, 10000000,
+                         "Most marching steps along one ray, for either marcher"),
+        integerParameter("render", "bit_depth", &S::render, &R::bitDepth, 8, 8, 16,
+                         "Bits per channel of the PNG image", {8, 16}),
+        choiceParameter("render", "engine", &S::render, &R::engine, "simd",
+                        {{"simd", RenderEngine::Simd}, {"scalar", RenderEngine::Scalar}},
+                        "simd marches many rays at once in SIMD lanes (z^d + c with sphere "
+                        "tracing; other formulas fall back); scalar is the double-precision "
+                        "reference marcher"),
+        choiceParameter("render", "precision", &S::render, &R::precision, "single",
+                        {{"single", Precision::Single}, {"double", Precision::Double}},
+                        "Floating-point precision of the simd engine: single is fastest, double "
+                        "(half as many lanes) holds deep zooms"),
+        choiceParameter("render", "alpha", &S::render, &R::alpha, "coverage",
+                        {{"coverage", AlphaMode::Coverage}, {"opaque", AlphaMode::Opaque}},
+                        "PNG alpha: coverage (the fraction of samples that hit, background "
+                        "transparent) or opaque (composited over the background gradient)"),
+        // [shading]
+        vectorParameter("shading", "light_direction", &S::shading, &H::lightDirection,
+                        {-0.5, 0.8, -0.6}, -1e3, 1e3,
+                        "Direction towards the key light in world space; any length"),
+        vectorParameter("shading", "light_color", &S::shading, &H::lightColor, {1.0, 0.92, 0.8}, 0,
+                        100, "Linear RGB colour and intensity of the key light"),
+        choiceParameter("shading", "shadows", &S::shading, &H::shadows, "soft",
+                        {{"soft", Shadows::Soft}, {"hard", Shadows::Hard}, {"none", Shadows::None}},
+                        "Shadows of the key light: soft (distance-estimate penumbrae), hard or "
+                        "none"),
+        realParameter("shading", "shadow_softness", &S::shading, &H::shadowSoftness, 12, 1, 1000,
+                      "Penumbra sharpness k of soft shadows; larger is harder"),
+        vectorParameter("shading", "fill_direction", &S::shading, &H::fillDirection,
+                        {0.6, 0.2, -0.4}, -1e3, 1e3,
+                        "Direction towards the fill light in world space; any length"),
+        vectorParameter("shading", "fill_color", &S::shading, &H::fillColor, {0.12, 0.16, 0.25}, 0,
+                        100, "Linear RGB colour and intensity of the fill light"),
+        realParameter("shading", "ambient", &S::shading, &H::ambient, 0.08, 0, 1,
+                      "Ambient light reaching every point, as a fraction of full light"),
+        realParameter("shading", "ambient_occlusion", &S::shading, &H::ambientOcclusion, 0.8, 0, 1,
+                      "Strength of ambient occlusion darkening creases; 0 turns it off"),
+        realParameter("shading", "specular", &S::shading, &H::specular, 0.3, 0, 10,
+                      "Strength of the specular highlights"),
+        realParameter("shading", "shininess", &S::shading, &H::shininess, 40, 1, 10000,
+                      "Specular exponent; larger gives smaller, sharper highlights"),
+        choiceParameter("shading", "coloring", &S::shading, &H::coloring, "orbit-trap",
+                        {{"orbit-trap", Coloring::OrbitTrap},
+                         {"iteration", Coloring::Iteration},
+                         {"solid", Coloring::Solid}},
+                        "Surface colour: mixed by orbit trap or by escape iteration from "
+                        "base_color and accent_color, or solid base_color"),
+        vectorParameter("shading", "base_color", &S::shading, &H::baseColor, {0.85, 0.42, 0.1}, 0,
+                        100, "Main linear RGB colour of the surface"),
+        vectorParameter("shading", "accent_color", &S::shading, &H::accentColor, {0.04, 0.16, 0.45},
+                        0, 100,
+                        "Second linear RGB surface colour, mixed in by orbit-trap and "
+                        "iteration colouring"),
+        vectorParameter("shading", "background_top", &S::shading, &H::backgroundTop,
+                        {0.02, 0.025, 0.04}, 0, 100,
+                        "Linear RGB background at the top of the image"),
+        vectorParameter("shading", "background_bottom", &S::shading, &H::backgroundBottom,
+                        {0.002, 0.002, 0.004}, 0, 100,
+                        "Linear RGB background at the bottom of the image"),
+        realParameter("shading", "gamma", &S::shading, &H::gamma, 2.2, 0.1, 10,
+                      "Display gamma of the encoded image (2.2 is close to sRGB)"),
+        realParameter("shading", "exposure", &S::shading, &H::exposure, 1, 0, 100,
+                      "Multiplies linear radiance before gamma encoding; 1 leaves it as is"),
+        // [plane]
+        choiceParameter("plane", "kind", &S::plane, &P::kind, "julia",
+                        {{"julia", PlaneKind::Julia},
+                         {"julia-boundary", PlaneKind::JuliaBoundary},
+                         {"mandelbrot", PlaneKind::Mandelbrot},
+                         {"basins", PlaneKind::Basins},
+                         {"slice", PlaneKind::Slice}},
+                        "`quaternia plane` image: filled Julia set K_c (smooth escape colours), "
+                        "its boundary J_c, the Mandelbrot set of z^d + c, basins of attraction, "
+                        "or a slice plane.origin + x plane.u + y plane.v through H"),
+        vectorParameter("plane", "center", &S::plane, &P::center, {0, 0}, -1e6, 1e6,
+                        "The plane point (x, y) at the image centre; for julia, mandelbrot and "
+                        "basins the complex number x + y i"),
+        realParameter("plane", "width", &S::plane, &P::width, 4, 1e-12, 1e6,
+                      "Width of the view in plane units (the height follows the image's aspect)"),
+        realParameter("plane", "rotation", &S::plane, &P::rotationDegrees, 0, -360, 360,
+                      "Counter-clockwise rotation of the view about its centre, in degrees"),
+        integerParameter("plane", "max_iterations", &S::plane, &P::maxIterations, 256, 1, 1000000,
+                         "Iterations of every plane kind before a point counts as inside (the 3D "
+                         "render's fractal.max_iterations is usually far fewer)"),
+        vectorParameter("plane", "origin", &S::plane, &P::origin, {0, 0, 0, 0}, -1e6, 1e6,
+                        "Slice kind: the point (1, i, j, k) of H at plane coordinates (0, 0)"),
+        vectorParameter("plane", "u", &S::plane, &P::u, {1, 0, 0, 0}, -1e6, 1e6,
+                        "Slice kind: the direction in H of the image's x axis; one plane unit "
+                        "is its length"),
+        vectorParameter("plane", "v", &S::plane, &P::v, {0, 1, 0, 0}, -1e6, 1e6,
+                        "Slice kind: the direction in H of the image's y axis (up); must not be "
+                        "parallel to plane.u"),
+        realParameter("plane", "boundary_width", &S::plane, &P::boundaryWidth, 0.75, 0.01, 100,
+                      "julia-boundary: J_c is drawn where the distance estimate is below this "
+                      "many pixels"),
+        // [mesh]
+        integerParameter(
+            "mesh", "resolution", &S::mesh, &M::resolution, 256, 1, 2048,
+            "Grid cells of `quaternia mesh` along the longest side of the set's "
+            "bounding box; time and memory grow with its square (1024: 1.5 GB, 2048: about 6 GB)"),
+        realParameter("mesh", "iso", &S::mesh, &M::iso, 0, 0, 16,
+                      "Moves the mesh's surface outward by this many cells, thickening thin "
+                      "parts for 3D printing; 0 meshes the set itself"),
+        realParameter("mesh", "min_component", &S::mesh, &M::minComponent, 0, 0, 1e6,
+                      "Drops connected pieces of the mesh whose volume (world units cubed) is "
+                      "below this; 0 keeps every piece"),
+    };
+}
+
+}  // namespace quaternia

@@ -1,0 +1,487 @@
+#include "quaternia/scene/parameters.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "quaternia/util/error.h"
+
+namespace quaternia {
+
+namespace {
+
+// ---- Formatting -------------------------------------------------------------------------------
+
+// Shortest digits that read back to the same double (std::to_chars), as TOML: a '.' or exponent
+// is added where the digits alone would read as an integer.
+std::string formatReal(double x) {
+    if (std::isnan(x)) return "nan";
+    if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+    std::array<char, 64> buffer{};
+    auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), x);
+    std::string text(buffer.data(), end);
+    if (text.find_first_of(".e") == std::string::npos) text += ".0";
+    return text;
+}
+
+// A bound for people: "16384", "0.0001", "-10000" rather than TOML's "16384.0".
+std::string formatBound(double x) {
+    std::array<char, 64> buffer{};
+    auto format = std::abs(x) >= 1e-6 && std::abs(x) < 1e15 ? std::chars_format::fixed
+                                                            : std::chars_format::general;
+    auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), x, format);
+    return std::string(buffer.data(), end);
+}
+
+std::string quoted(const std::string& text) {
+    std::string out = "\"";
+    for (unsigned char ch : text) {
+        switch (ch) {
+            case '"':
+                out += "\\\"";
+                break;
+            case '\\':
+                out += "\\\\";
+                break;
+            case '\b':
+                out += "\\b";
+                break;
+            case '\t':
+                out += "\\t";
+                break;
+            case '\n':
+                out += "\\n";
+                break;
+            case '\f':
+                out += "\\f";
+                break;
+            case '\r':
+                out += "\\r";
+                break;
+            default:
+                if (ch < 0x20 || ch == 0x7f) {
+                    static const char* digits = "0123456789ABCDEF";
+                    out += "\\u00";
+                    out += digits[ch >> 4];
+                    out += digits[ch & 15];
+                } else {
+                    out += char(ch);
+                }
+        }
+    }
+    return out + "\"";
+}
+
+// "a", "a or b", "a, b or c".
+std::string joinAlternatives(const std::vector<std::string>& items) {
+    std::string out;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) out += i + 1 == items.size() ? " or " : ", ";
+        out += items[i];
+    }
+    return out;
+}
+
+std::size_t vectorLength(ParameterType type) {
+    switch (type) {
+        case ParameterType::Vector2:
+            return 2;
+        case ParameterType::Vector3:
+            return 3;
+        case ParameterType::Vector4:
+            return 4;
+        case ParameterType::Vector6:
+            return 6;
+        default:
+            return 0;
+    }
+}
+
+const char* typeName(ParameterType type) {
+    switch (type) {
+        case ParameterType::Real:
+            return "real";
+        case ParameterType::Integer:
+            return "integer";
+        case ParameterType::Boolean:
+            return "boolean";
+        case ParameterType::Text:
+            return "text";
+        case ParameterType::Choice:
+            return "choice";
+        case ParameterType::Vector2:
+            return "2 reals";
+        case ParameterType::Vector3:
+            return "3 reals";
+        case ParameterType::Vector4:
+            return "4 reals";
+        case ParameterType::Vector6:
+            return "6 reals";
+    }
+    return "?";
+}
+
+// ---- Checks -----------------------------------------------------------------------------------
+
+[[noreturn]] void throwWrongType(const Parameter& p, const ParameterValue& value) {
+    throw UserError(p.name(),
+                    p.name() + " must be " + describeType(p) + ", got " + formatValue(value));
+}
+
+void checkFinite(const Parameter& p, bool finite, const ParameterValue& value) {
+    if (!finite) throw UserError(p.name(), p.name() + " must be finite, got " + formatValue(value));
+}
+
+// "[minimum, maximum]". Appended piecewise: GCC 12 warns falsely (-Wrestrict, bug 105329) about
+// "[" + std::string.
+std::string interval(const Parameter& p) {
+    std::string out = "[";
+    out.append(formatBound(p.minimum)).append(", ").append(formatBound(p.maximum)) += "]";
+    return out;
+}
+
+// `label` is the name, or the name with a component index.
+void checkRange(const Parameter& p, const std::string& label, double x, const std::string& shown) {
+    if (x < p.minimum || x > p.maximum)
+        throw UserError(p.name(), label + " = " + shown + " is out of range " + interval(p));
+}
+
+double checkedReal(const Parameter& p, const ParameterValue& value) {
+    double x = 0;
+    if (const auto* real = std::get_if<double>(&value))
+        x = *real;
+    else if (const auto* integer = std::get_if<int64_t>(&value))
+        x = double(*integer);
+    else
+        throwWrongType(p, value);
+    checkFinite(p, std::isfinite(x), value);
+    checkRange(p, p.name(), x, formatValue(value));
+    return x;
+}
+
+int64_t checkedInteger(const Parameter& p, const ParameterValue& value) {
+    double x = 0;  // exact for every value in range, so the range check is exact too
+    if (const auto* integer = std::get_if<int64_t>(&value)) {
+        x = double(*integer);
+    } else if (const auto* real = std::get_if<double>(&value)) {
+        checkFinite(p, std::isfinite(*real), value);
+        if (*real != std::trunc(*real)) throwWrongType(p, value);
+        x = *real;
+    } else {
+        throwWrongType(p, value);
+    }
+    checkRange(p, p.name(), x, formatValue(value));
+    auto n = int64_t(x);
+    const auto& allowed = p.allowedIntegers;
+    if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), n) == allowed.end())
+        throw UserError(p.name(), p.name() + " = " + formatValue(value) + " is not allowed; use " +
+                                      describeRange(p));
+    return n;
+}
+
+std::string checkedText(const Parameter& p, const ParameterValue& value) {
+    const auto* text = std::get_if<std::string>(&value);
+    if (text == nullptr) throwWrongType(p, value);
+    if (p.type == ParameterType::Choice) {
+        if (std::find(p.choices.begin(), p.choices.end(), *text) == p.choices.end())
+            throwWrongType(p, value);
+        return *text;
+    }
+    if (double(text->size()) < p.minimum)
+        throw UserError(p.name(), p.minimum <= 1 ? p.name() + " must not be empty"
+                                                 : p.name() + " must have at least " +
+                                                       formatBound(p.minimum) + " characters");
+    if (double(text->size()) > p.maximum)
+        throw UserError(p.name(), p.name() + " has " + std::to_string(text->size()) +
+                                      " characters; at most " + formatBound(p.maximum) +
+                                      " are allowed");
+    return *text;
+}
+
+std::vector<double> checkedVector(const Parameter& p, const ParameterValue& value) {
+    const auto* v = std::get_if<std::vector<double>>(&value);
+    if (v == nullptr || v->size() != vectorLength(p.type)) throwWrongType(p, value);
+    checkFinite(p, std::all_of(v->begin(), v->end(), [](double x) { return std::isfinite(x); }),
+                value);
+    for (std::size_t i = 0; i < v->size(); ++i)
+        checkRange(p, p.name() + "[" + std::to_string(i) + "]", (*v)[i], formatReal((*v)[i]));
+    return *v;
+}
+
+}  // namespace
+
+// ---- Table access -----------------------------------------------------------------------------
+
+const std::vector<Parameter>& parameterTable() {
+    static const std::vector<Parameter> table = buildParameterTable();
+    return table;
+}
+
+const std::vector<std::string>& parameterSections() {
+    static const std::vector<std::string> sections = [] {
+        std::vector<std::string> names;
+        for (const auto& p : parameterTable())
+            if (names.empty() || names.back() != p.section) names.push_back(p.section);
+        return names;
+    }();
+    return sections;
+}
+
+const Parameter* findParameter(std::string_view name) {
+    for (const auto& p : parameterTable())
+        if (name.size() == p.section.size() + 1 + p.key.size() && name.starts_with(p.section) &&
+            name[p.section.size()] == '.' && name.ends_with(p.key))
+            return &p;
+    return nullptr;
+}
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+namespace {
+
+std::size_t commonPrefixLength(std::string_view a, std::string_view b) {
+    std::size_t n = 0;
+    while (n < a.size() && n < b.size() && a[n] == b[n])
+        ++n;
+    return n;
+}
+
+// Fewer edits first; among equals, the longer common prefix ("shade" is nearer "shading" than
+// "slice"), then the earlier candidate.
+struct Nearest {
+    std::string_view query;
+    std::string best;
+    std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
+    std::size_t bestPrefix = 0;
+
+    void consider(const std::string& candidate, std::size_t distance) {
+        std::size_t prefix = commonPrefixLength(query, candidate);
+        if (distance < bestDistance || (distance == bestDistance && prefix > bestPrefix))
+            best = candidate, bestDistance = distance, bestPrefix = prefix;
+    }
+};
+
+}  // namespace
+
+std::string nearestParameterName(std::string_view name) {
+    std::size_t dot = name.find('.');
+    bool hasSection = dot != std::string_view::npos;
+    std::string_view section = hasSection ? name.substr(0, dot) : std::string_view();
+    std::string_view key = hasSection ? name.substr(dot + 1) : name;
+    const auto& sections = parameterSections();
+    bool knownSection = std::find(sections.begin(), sections.end(), section) != sections.end();
+    Nearest nearest{name, {}};
+    for (const auto& p : parameterTable()) {
+        // Keys are compared within their section first: a key of another section costs 2
+        // edits more, and 1 more where the section is missing or unknown (so "width" and
+        // "image.width" suggest "render.width"). The whole name catches typos in the section.
+        // Levenshtein favours short keys, so a key that the typed one begins ("max_iter",
+        // "light") counts as 1 edit away.
+        std::size_t keyDistance = editDistance(key, p.key);
+        if (key.size() >= 3 && p.key.starts_with(key))
+            keyDistance = std::min<std::size_t>(keyDistance, 1);
+        std::size_t sectionCost = section == p.section ? 0 : knownSection ? 2 : 1;
+        nearest.consider(p.name(),
+                         std::min(editDistance(name, p.name()), keyDistance + sectionCost));
+    }
+    return nearest.best;
+}
+
+std::string nearestSectionName(std::string_view section) {
+    Nearest nearest{section, {}};
+    for (const auto& candidate : parameterSections())
+        nearest.consider(candidate, editDistance(section, candidate));
+    return nearest.best;
+}
+
+Scene defaultScene() {
+    Scene scene;
+    for (const auto& p : parameterTable())
+        p.apply(scene, p.defaultValue);
+    return scene;
+}
+
+// ---- Checking and setting ---------------------------------------------------------------------
+
+ParameterValue checkedValue(const Parameter& p, const ParameterValue& value) {
+    switch (p.type) {
+        case ParameterType::Real:
+            return checkedReal(p, value);
+        case ParameterType::Integer:
+            return checkedInteger(p, value);
+        case ParameterType::Boolean:
+            if (!std::holds_alternative<bool>(value)) throwWrongType(p, value);
+            return value;
+        case ParameterType::Text:
+        case ParameterType::Choice:
+            return checkedText(p, value);
+        case ParameterType::Vector2:
+        case ParameterType::Vector3:
+        case ParameterType::Vector4:
+        case ParameterType::Vector6:
+            return checkedVector(p, value);
+    }
+    throwWrongType(p, value);
+}
+
+void setParameter(Scene& scene, std::string_view name, const ParameterValue& value) {
+    const Parameter* p = findParameter(name);
+    if (p == nullptr)
+        throw UserError(std::string(name), "unknown key '" + std::string(name) +
+                                               "' (did you mean '" + nearestParameterName(name) +
+                                               "'?)");
+    p->apply(scene, checkedValue(*p, value));
+}
+
+void validateScene(const Scene& scene) {
+    for (const auto& p : parameterTable())
+        checkedValue(p, p.read(scene));
+
+    const CameraSettings& camera = scene.camera;
+    Vector3d view = camera.lookAt - camera.position;
+    if (dot(view, view) == 0)
+        throw UserError("camera.look_at",
+                        "camera.look_at equals camera.position; the camera needs a direction to "
+                        "look in");
+    // sin(angle between up and view) below 1e-9: no sideways axis can be built from them.
+    if (length(cross(camera.up, view)) <= 1e-9 * length(camera.up) * length(view))
+        throw UserError("camera.up", "camera.up = " +
+                                         formatValue(std::vector<double>{camera.up.x, camera.up.y,
+                                                                         camera.up.z}) +
+                                         " is zero or parallel to the view direction "
+                                         "camera.look_at - camera.position");
+
+    const SliceSettings& slice = scene.slice;
+    double normalLength = norm(slice.normal);
+    if (normalLength == 0) throw UserError("slice.normal", "slice.normal must not be zero");
+    // The 3D step of a marcher is the 4D distance times |s^_w| (docs/methods.md), so a w component
+    // that is merely tiny would stall every ray; 1e-6 of the normal's length is the floor.
+    if (std::abs(slice.normal[3]) < 1e-6 * normalLength)
+        throw UserError("slice.normal",
+                        "slice.normal needs a w component (the 4th): POV-Ray's slice computes "
+                        "w = (distance - s.xyz) / s_w for each 3D point, so |s_w| must be at least "
+                        "1e-6 of the normal's length");
+    if (normSquared(slice.left) == 0)
+        throw UserError("slice.left", "slice.left must not be zero (it is made unit length)");
+    if (normSquared(slice.right) == 0)
+        throw UserError("slice.right", "slice.right must not be zero (it is made unit length)");
+
+    const ShadingSettings& shading = scene.shading;
+    if (dot(shading.lightDirection, shading.lightDirection) == 0)
+        throw UserError("shading.light_direction", "shading.light_direction must not be zero");
+    if (dot(shading.fillDirection, shading.fillDirection) == 0)
+        throw UserError("shading.fill_direction", "shading.fill_direction must not be zero");
+
+    const RenderSettings& render = scene.render;
+    constexpr int64_t kMaximumSamples = int64_t{16384} * 16384 * 16;
+    int64_t total = int64_t{render.width} * render.height * render.samples;
+    if (total > kMaximumSamples)
+        throw UserError("render.samples",
+                        "render.width * render.height * render.samples = " +
+                            std::to_string(render.width) + " * " + std::to_string(render.height) +
+                            " * " + std::to_string(render.samples) + " = " + std::to_string(total) +
+                            " samples, more than the limit of " + std::to_string(kMaximumSamples) +
+                            " (16384 * 16384 * 16); lower render.samples or the image size");
+}
+
+// ---- Descriptions -----------------------------------------------------------------------------
+
+std::string describeType(const Parameter& p) {
+    switch (p.type) {
+        case ParameterType::Real:
+            return "a number";
+        case ParameterType::Integer:
+            return "an integer";
+        case ParameterType::Boolean:
+            return "true or false";
+        case ParameterType::Text:
+            return "a string";
+        case ParameterType::Choice:
+            return describeRange(p);
+        case ParameterType::Vector2:
+        case ParameterType::Vector3:
+        case ParameterType::Vector4:
+        case ParameterType::Vector6:
+            return "an array of " + std::to_string(vectorLength(p.type)) + " numbers";
+    }
+    return "?";
+}
+
+std::string describeRange(const Parameter& p) {
+    switch (p.type) {
+        case ParameterType::Real:
+            return interval(p);
+        case ParameterType::Integer: {
+            if (p.allowedIntegers.empty()) return interval(p);
+            std::vector<std::string> values;
+            for (int64_t n : p.allowedIntegers)
+                values.push_back(std::to_string(n));
+            return joinAlternatives(values);
+        }
+        case ParameterType::Boolean:
+            return "true or false";
+        case ParameterType::Text:
+            return formatBound(p.minimum) + " to " + formatBound(p.maximum) + " characters";
+        case ParameterType::Choice: {
+            std::vector<std::string> words;
+            for (const auto& choice : p.choices)
+                words.push_back(quoted(choice));
+            return joinAlternatives(words);
+        }
+        case ParameterType::Vector2:
+        case ParameterType::Vector3:
+        case ParameterType::Vector4:
+        case ParameterType::Vector6:
+            return "each in " + interval(p);
+    }
+    return "?";
+}
+
+std::string formatValue(const ParameterValue& value) {
+    struct Formatter {
+        std::string operator()(double x) const { return formatReal(x); }
+        std::string operator()(int64_t n) const { return std::to_string(n); }
+        std::string operator()(bool b) const { return b ? "true" : "false"; }
+        std::string operator()(const std::string& text) const { return quoted(text); }
+        std::string operator()(const std::vector<double>& v) const {
+            std::string out = "[";
+            for (std::size_t i = 0; i < v.size(); ++i)
+                out += (i ? ", " : "") + formatReal(v[i]);
+            return out + "]";
+        }
+    };
+    return std::visit(Formatter{}, value);
+}
+
+std::string parameterHelp() {
+    std::string out =
+        "Scene parameters. Set them in a scene file as `key = value` under `[section]`, or on the\n"
+        "command line as --set section.key=value, the value in TOML syntax (a bare word such as\n"
+        "fixed-step or z^3+c is taken as a string).\n";
+    std::string section;
+    for (const auto& p : parameterTable()) {
+        if (p.section != section) out += "\n[" + (section = p.section) + "]\n";
+        out += "  " + p.name() + " = " + formatValue(p.defaultValue) + "    (" + typeName(p.type) +
+               ", " + describeRange(p) + ")\n      " + p.help + "\n";
+    }
+    return out;
+}
+
+}  // namespace quaternia

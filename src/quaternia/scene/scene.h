@@ -1,0 +1,118 @@
+// A scene: everything a render (and later a mesh or the explorer) needs, as plain values that
+// travel by copy, so a server can hold many at once. The defaults, ranges and help of every
+// field are declared once, in the parameter table (parameters.cpp); use defaultScene() rather
+// than a default-constructed Scene, whose fields are merely zero.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "quaternia/algebra/quaternion.h"
+#include "quaternia/algebra/vecmath.h"
+
+namespace quaternia {
+
+using Color = Vector3d;  // linear RGB
+
+struct FractalSettings {
+    std::string formula;  // eq. 2.10 polynomial in z; the name c stands for `c` below
+    Quaternion c;         // (1, i, j, k)
+    int maxIterations = 0;
+    double bailout = 0;  // |z| > bailout escapes; 0 = the polynomial's own escape radius
+};
+
+// 4D -> 3D (slice.h): a 3D point p is drawn iff left * s(p) * right is in the set, where s(p) is
+// POV-Ray's slice embedding for hyperplane normal . q = distance, and the six plane angles are a
+// friendlier way to compose extra rotations into left and right.
+struct SliceSettings {
+    Quaternion normal;  // (x, y, z, w) components of the 4D hyperplane normal
+    double distance = 0;
+    Quaternion left, right;                 // unit quaternions
+    std::array<double, 6> anglesDegrees{};  // planes 1i, 1j, 1k, ij, ik, jk
+};
+
+struct CameraSettings {
+    Point3d position, lookAt;
+    Vector3d up;            // POV-Ray's sky vector
+    double fovDegrees = 0;  // horizontal field of view
+};
+
+enum class MarchMethod { SphereTracing, FixedStep };
+// Coverage: alpha is the fraction of a pixel's samples that hit, colour that of the hits.
+// Opaque: the image is composited over the background gradient, alpha 1.
+enum class AlphaMode { Coverage, Opaque };
+
+// Simd: the packet kernels (packet_kernels.h) for s z^d + c with sphere tracing, in float or
+// double lanes; everything else, and Scalar, runs the scalar double reference (march.h).
+enum class RenderEngine { Simd, Scalar };
+enum class Precision { Single, Double };
+
+struct RenderSettings {
+    int width = 0, height = 0;
+    int samples = 0;  // per pixel, stratified
+    MarchMethod method = MarchMethod::SphereTracing;
+    double step = 0;        // fixed-step delta (Algorithm 2), world units
+    double epsilon = 0;     // sphere tracing stops at epsilon * pixel footprint at distance t
+    int maxSteps = 0;       // per ray, for either marcher
+    double relaxation = 0;  // sphere tracing's over-relaxation (kMarchRelaxation); 1 = plain
+    int bitDepth = 0;       // 8 or 16 bits per PNG channel
+    AlphaMode alpha = AlphaMode::Coverage;
+    RenderEngine engine = RenderEngine::Simd;
+    Precision precision = Precision::Single;
+};
+
+enum class Shadows { None, Hard, Soft };
+enum class Coloring { OrbitTrap, Iteration, Solid };
+
+struct ShadingSettings {
+    Vector3d lightDirection;  // towards the key light, world space
+    Color lightColor;
+    Shadows shadows = Shadows::Soft;
+    double shadowSoftness = 0;  // penumbra sharpness k of DE soft shadows (bigger = harder)
+    Vector3d fillDirection;
+    Color fillColor;
+    double ambient = 0;
+    double ambientOcclusion = 0;  // strength in [0, 1]
+    double specular = 0;
+    double shininess = 0;
+    Coloring coloring = Coloring::OrbitTrap;
+    Color baseColor, accentColor;
+    Color backgroundTop, backgroundBottom;
+    double gamma = 0;
+    double exposure = 0;
+};
+
+// `quaternia plane`: 2D images (plane_render.h). The filled Julia set K_c with smooth escape
+// colouring, the Julia set J_c drawn by its distance estimate, the Mandelbrot set of z^d + c,
+// basins of attraction, or a plane through H (origin + x u + y v). Image size, anti-aliasing
+// and bit depth come from [render], the polynomial, c and bailout from [fractal].
+enum class PlaneKind { Julia, JuliaBoundary, Mandelbrot, Basins, Slice };
+
+struct PlaneSettings {
+    PlaneKind kind = PlaneKind::Julia;
+    std::array<double, 2> center{};  // the plane point at the image centre
+    double width = 0;                // plane units across the image
+    double rotationDegrees = 0;      // counter-clockwise turn of the view
+    int maxIterations = 0;           // for every plane kind; fractal.max_iterations is the 3D one
+    Quaternion origin, u, v;         // slice kind: the plane origin + x u + y v of H
+    double boundaryWidth = 0;        // julia-boundary: J_c is lit where DE < this many pixels
+};
+
+// `quaternia mesh` (mesher.h): marching tetrahedra of the set on a sparse grid.
+struct MeshSettings {
+    int resolution = 0;       // grid cells along the longest side of the set's bounding box
+    double iso = 0;           // surface offset outward, in cells (thickens thin parts for printing)
+    double minComponent = 0;  // connected components of smaller |volume| are dropped (world^3)
+};
+
+struct Scene {
+    FractalSettings fractal;
+    SliceSettings slice;
+    CameraSettings camera;
+    RenderSettings render;
+    ShadingSettings shading;
+    PlaneSettings plane;
+    MeshSettings mesh;
+};
+
+}  // namespace quaternia

@@ -1,0 +1,216 @@
+#include "quaternia/scene/scene_file.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <tuple>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "quaternia/scene/parameters.h"
+#include "quaternia/util/error.h"
+
+namespace quaternia {
+
+namespace {
+
+// ---- TOML -> ParameterValue -------------------------------------------------------------------
+
+// Integers, floats, booleans, strings and arrays of numbers (integers and floats mixed, read
+// as reals); nothing for tables, dates, times and other arrays.
+std::optional<ParameterValue> toParameterValue(const toml::node& node) {
+    // Built in place: moving a variant temporary into the optional trips GCC 12's
+    // -Wmaybe-uninitialized false positive in optimised sanitizer builds.
+    auto value = [](auto&& x) {
+        return std::optional<ParameterValue>(std::in_place, std::forward<decltype(x)>(x));
+    };
+    if (const auto* integer = node.as_integer()) return value(int64_t(integer->get()));
+    if (const auto* real = node.as_floating_point()) return value(double(real->get()));
+    if (const auto* boolean = node.as_boolean()) return value(bool(boolean->get()));
+    if (const auto* text = node.as_string()) return value(std::string(text->get()));
+    if (const auto* array = node.as_array()) {
+        std::vector<double> numbers;
+        for (const auto& element : *array) {
+            if (const auto* integer = element.as_integer())
+                numbers.push_back(double(integer->get()));
+            else if (const auto* real = element.as_floating_point())
+                numbers.push_back(real->get());
+            else
+                return std::nullopt;
+        }
+        return value(std::move(numbers));
+    }
+    return std::nullopt;
+}
+
+// What a value that toParameterValue could not read was, for messages.
+std::string describeNode(const toml::node& node) {
+    if (auto value = toParameterValue(node)) return formatValue(*value);
+    if (const auto* array = node.as_array()) {
+        std::string out = "[";
+        for (std::size_t i = 0; i < array->size(); ++i)
+            out += (i ? ", " : "") + describeNode(*array->get(i));
+        return out + "]";
+    }
+    if (node.is_table()) return "a table";
+    if (node.is_date()) return "a date";
+    if (node.is_time()) return "a time";
+    return "a date-time";
+}
+
+// "scene.toml:3:7: "
+std::string location(const std::string& sourceName, const toml::source_position& where) {
+    return sourceName + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
+           ": ";
+}
+
+bool isSection(std::string_view name) {
+    const auto& sections = parameterSections();
+    return std::find(sections.begin(), sections.end(), name) != sections.end();
+}
+
+// One `key = value` of the file: "section.key" (or a bare top-level key) with where it was.
+struct Entry {
+    toml::source_position where;
+    std::string name;
+    const toml::node* value;
+};
+
+// Every entry, in the order of the file (toml++ keeps tables sorted by key), so that the first
+// error reported is the first in the file.
+std::vector<Entry> entriesInFileOrder(const toml::table& root) {
+    std::vector<Entry> entries;
+    for (const auto& [key, node] : root) {
+        const auto* section = node.as_table();
+        if (section != nullptr && isSection(key.str())) {
+            for (const auto& [innerKey, innerNode] : *section)
+                entries.push_back({innerKey.source().begin,
+                                   std::string(key.str()) + "." + std::string(innerKey.str()),
+                                   &innerNode});
+        } else {
+            entries.push_back({key.source().begin, std::string(key.str()), &node});
+        }
+    }
+    std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+        return std::tie(a.where.line, a.where.column) < std::tie(b.where.line, b.where.column);
+    });
+    return entries;
+}
+
+void applyEntry(Scene& scene, const Entry& entry, const std::string& sourceName) {
+    std::string at = location(sourceName, entry.where);
+    if (isSection(entry.name))
+        throw UserError(entry.name, at + "'" + entry.name + "' must be a section: write [" +
+                                        entry.name + "] above its keys");
+    const Parameter* p = findParameter(entry.name);
+    if (p == nullptr && entry.value->is_table() && entry.name.find('.') == std::string::npos)
+        throw UserError(entry.name, at + "unknown section [" + entry.name + "] (did you mean [" +
+                                        nearestSectionName(entry.name) + "]?)");
+    if (p == nullptr)
+        throw UserError(entry.name, at + "unknown key '" + entry.name + "' (did you mean '" +
+                                        nearestParameterName(entry.name) + "'?)");
+    auto value = toParameterValue(*entry.value);
+    if (!value)
+        throw UserError(p->name(), at + p->name() + " must be " + describeType(*p) + ", got " +
+                                       describeNode(*entry.value));
+    try {
+        p->apply(scene, checkedValue(*p, *value));
+    } catch (const UserError& error) {
+        throw UserError(error.key(), at + error.what());
+    }
+}
+
+// One line: toml++ descriptions may in principle span lines.
+std::string oneLine(std::string_view text) {
+    std::string out(text);
+    std::replace(out.begin(), out.end(), '\n', ' ');
+    return out;
+}
+
+std::string trim(std::string_view text) {
+    const char* space = " \t\r\n";
+    std::size_t first = text.find_first_not_of(space);
+    if (first == std::string_view::npos) return {};
+    return std::string(text.substr(first, text.find_last_not_of(space) - first + 1));
+}
+
+// `text` read as a single TOML value, or nothing if it is not one.
+std::optional<ParameterValue> parseTomlValue(const std::string& text) {
+    try {
+        toml::table table = toml::parse("v = " + text + "\n");
+        if (table.size() != 1 || !table.contains("v")) return std::nullopt;
+        return toParameterValue(*table.get("v"));
+    } catch (const toml::parse_error&) {
+        return std::nullopt;
+    }
+}
+
+}  // namespace
+
+Scene parseScene(std::string_view tomlText, const std::string& sourceName) {
+    toml::table root;
+    try {
+        root = toml::parse(tomlText, sourceName);
+    } catch (const toml::parse_error& error) {
+        throw UserError(sourceName,
+                        location(sourceName, error.source().begin) + oneLine(error.description()));
+    }
+    Scene scene = defaultScene();
+    for (const Entry& entry : entriesInFileOrder(root))
+        applyEntry(scene, entry, sourceName);
+    return scene;
+}
+
+Scene loadScene(const std::string& path) {
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                         &std::fclose);
+    auto fail = [&path] {
+        return UserError(path, "cannot read scene file '" + path + "': " + std::strerror(errno));
+    };
+    if (!file) throw fail();
+    std::string text;
+    char buffer[1 << 14];
+    std::size_t count = 0;
+    while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
+        text.append(buffer, count);
+    if (std::ferror(file.get())) throw fail();  // e.g. EISDIR: fopen opens a directory
+    return parseScene(text, path);
+}
+
+void applyOverride(Scene& scene, std::string_view assignment) {
+    std::size_t equals = assignment.find('=');
+    if (equals == std::string_view::npos)
+        throw UserError("--set",
+                        "--set expects section.key=value, got '" + std::string(assignment) + "'");
+    std::string name = trim(assignment.substr(0, equals));
+    std::string raw = trim(assignment.substr(equals + 1));
+
+    ParameterValue value = raw;
+    if (auto parsed = parseTomlValue(raw)) {
+        // "--set fractal.formula=2" means the text 2, not a type error.
+        const Parameter* p = findParameter(name);
+        bool wantsText =
+            p != nullptr && (p->type == ParameterType::Text || p->type == ParameterType::Choice);
+        if (!wantsText || std::holds_alternative<std::string>(*parsed)) value = std::move(*parsed);
+    }
+    setParameter(scene, name, value);
+}
+
+std::string sceneToToml(const Scene& scene) {
+    std::string out =
+        "# Quaternia scene. Every key is optional: one left out keeps the default shown by\n"
+        "# `quaternia render --help`.\n";
+    std::string section;
+    for (const Parameter& p : parameterTable()) {
+        if (p.section != section) out += "\n[" + (section = p.section) + "]\n";
+        out += "# " + p.help + " (" + describeRange(p) + ")\n";
+        out += p.key + " = " + formatValue(p.read(scene)) + "\n";
+    }
+    return out;
+}
+
+}  // namespace quaternia

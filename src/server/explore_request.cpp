@@ -1,0 +1,167 @@
+#include "server/explore_request.h"
+
+#include <variant>
+
+#include "quaternia/fractal/fractal.h"
+#include "quaternia/scene/json.h"
+#include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_file.h"
+#include "quaternia/util/error.h"
+
+namespace quaternia {
+namespace {
+
+void checkAtMost(const std::string& key, int64_t value, int64_t limit, const std::string& what) {
+    if (value > limit) {
+        throw UserError(key, key + " = " + std::to_string(value) + " is above the explorer's " +
+                                 "limit of " + std::to_string(limit) + " " + what);
+    }
+}
+
+// A ParameterValue as JSON: numbers, booleans, strings, arrays of numbers.
+std::string jsonValue(const ParameterValue& value) {
+    if (auto* real = std::get_if<double>(&value)) return jsonNumber(*real);
+    if (auto* integer = std::get_if<int64_t>(&value)) return std::to_string(*integer);
+    if (auto* boolean = std::get_if<bool>(&value)) return *boolean ? "true" : "false";
+    if (auto* text = std::get_if<std::string>(&value)) return jsonString(*text);
+    std::string out = "[";
+    for (double v : std::get<std::vector<double>>(value)) {
+        if (out.size() > 1) out += ", ";
+        out += jsonNumber(v);
+    }
+    out += ']';
+    return out;
+}
+
+const char* typeName(ParameterType type) {
+    switch (type) {
+        case ParameterType::Real:
+            return "real";
+        case ParameterType::Integer:
+            return "integer";
+        case ParameterType::Boolean:
+            return "boolean";
+        case ParameterType::Text:
+            return "text";
+        case ParameterType::Choice:
+            return "choice";
+        case ParameterType::Vector2:
+            return "vector2";
+        case ParameterType::Vector3:
+            return "vector3";
+        case ParameterType::Vector4:
+            return "vector4";
+        case ParameterType::Vector6:
+        default:
+            return "vector6";
+    }
+}
+
+// Single quotes for a POSIX shell: nothing inside is special except the quote itself.
+std::string shellQuote(const std::string& text) {
+    std::string out = "'";
+    for (char ch : text) {
+        if (ch == '\'')
+            out += "'\\''";
+        else
+            out += ch;
+    }
+    out += '\'';
+    return out;
+}
+
+}  // namespace
+
+Scene sceneFromQuery(const Scene& base, const QueryParameters& query, const ExploreLimits& limits) {
+    if (query.size() > limits.maxParameters) {
+        throw UserError("query", "too many query parameters (" + std::to_string(query.size()) +
+                                     "; at most " + std::to_string(limits.maxParameters) + ")");
+    }
+    Scene scene = base;
+    for (const auto& [name, value] : query) {
+        if (name == kClientParameter) continue;
+        if (name.find('=') != std::string::npos || name.empty())
+            throw UserError(name, "unknown key '" + name + "'");
+        applyOverride(scene, name + "=" + value);
+    }
+    validateScene(scene);
+    // The explorer's own bounds on cost, then the formula (a parse error names fractal.formula).
+    checkAtMost("fractal.max_iterations", scene.fractal.maxIterations, limits.maxIterations,
+                "iterations");
+    checkAtMost("render.max_steps", scene.render.maxSteps, limits.maxSteps, "steps");
+    Fractal::fromScene(scene);
+    return scene;
+}
+
+void checkInteractiveImage(const Scene& scene, const ExploreLimits& limits) {
+    int64_t pixels = int64_t{scene.render.width} * scene.render.height;
+    checkAtMost("render.width", pixels, limits.interactivePixels, "pixels (width x height)");
+    checkAtMost("render.samples", scene.render.samples, limits.interactiveSamples,
+                "samples per pixel");
+}
+
+void checkDownloadImage(const Scene& scene, const ExploreLimits& limits) {
+    checkAtMost("render.width", scene.render.width, limits.downloadSide, "pixels");
+    checkAtMost("render.height", scene.render.height, limits.downloadSide, "pixels");
+    int64_t rays = int64_t{scene.render.width} * scene.render.height * scene.render.samples;
+    checkAtMost("render.samples", rays, limits.downloadRays, "rays (width x height x samples)");
+}
+
+void checkMeshRequest(const Scene& scene, const ExploreLimits& limits) {
+    checkAtMost("mesh.resolution", scene.mesh.resolution, limits.meshResolution, "cells");
+}
+
+std::string clientIdFromQuery(const QueryParameters& query) {
+    std::string id;
+    for (const auto& [name, value] : query)
+        if (name == kClientParameter) id = value;
+    bool valid = id.size() <= 64;
+    for (char ch : id) {
+        bool word = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') ||
+                    (ch >= '0' && ch <= '9') || ch == '-' || ch == '_';
+        valid = valid && word;
+    }
+    if (!valid) {
+        throw UserError(kClientParameter, "client must be at most 64 letters, digits, '-' or '_'");
+    }
+    return id;
+}
+
+std::string renderCommandForScene(const Scene& scene) {
+    const Scene defaults = defaultScene();
+    std::string command = "quaternia render";
+    for (const Parameter& p : parameterTable()) {
+        ParameterValue value = p.read(scene);
+        if (value == p.read(defaults)) continue;
+        command += " --set " + shellQuote(p.name() + "=" + formatValue(value));
+    }
+    command += " -o quaternia.png";
+    return command;
+}
+
+std::string parameterTableJson(const Scene& base) {
+    std::string out = "[";
+    for (const Parameter& p : parameterTable()) {
+        if (out.size() > 1) out += ",\n";
+        out += "{\"name\": " + jsonString(p.name()) + ", \"section\": " + jsonString(p.section) +
+               ", \"key\": " + jsonString(p.key) + ", \"type\": \"" + typeName(p.type) +
+               "\", \"default\": " + jsonValue(p.defaultValue) +
+               ", \"value\": " + jsonValue(p.read(base)) +
+               ", \"minimum\": " + jsonNumber(p.minimum) +
+               ", \"maximum\": " + jsonNumber(p.maximum) + ", \"choices\": [";
+        for (std::size_t i = 0; i < p.choices.size(); ++i)
+            out += (i ? ", " : "") + jsonString(p.choices[i]);
+        out += "], \"allowed\": [";
+        for (std::size_t i = 0; i < p.allowedIntegers.size(); ++i)
+            out += (i ? ", " : "") + std::to_string(p.allowedIntegers[i]);
+        out += "], \"help\": " + jsonString(p.help) + "}";
+    }
+    out += "]\n";
+    return out;
+}
+
+std::string errorJson(const std::string& key, const std::string& message) {
+    return "{\"error\": " + jsonString(message) + ", \"key\": " + jsonString(key) + "}\n";
+}
+
+}  // namespace quaternia

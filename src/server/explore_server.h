@@ -1,0 +1,62 @@
+// `quaternia explore`'s HTTP server (cpp-httplib): the embedded page, the parameter table as
+// JSON, and images, scene files, CLI commands and meshes of the view a request's query names.
+// Every query parameter is a scene key checked by the parameter table; a bad one is answered
+// 400 with {"error": ..., "key": ...}. Library-like: it never prints or exits, so the tests run
+// it in-process.
+//
+// Routes (GET):
+//   /, /index.html, /explore.js, /explore.css    the page (exactly these paths, nothing else)
+//   /api/parameters     the table, with the starting scene's values
+//   /api/render         PNG of the view, at most ExploreLimits::interactivePixels; 204 when a
+//                       newer request of the same `client` cancelled it
+//   /api/download       PNG as an attachment, up to 4096 x 4096
+//   /api/mandelbrot     PNG of the Mandelbrot set of the formula (z^2 + c when it has none)
+//   /api/scene          the view as a scene file (TOML)
+//   /api/command        the view as a `quaternia render` command line
+//   /api/mesh           binary STL of the view's set, mesh.resolution at most 256
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "quaternia/scene/scene.h"
+#include "server/explore_request.h"
+
+namespace quaternia {
+
+struct ExploreServerOptions {
+    std::string bind = "127.0.0.1";  // loopback unless told otherwise
+    int port = 8080;                 // 0: any free port (see ExploreServer::port)
+    Scene startScene;                // what the page starts from; query keys apply on top
+    int renderThreads = 0;           // per render; 0 = every core
+    int concurrentRenders = 2;       // renders running at once; more requests wait
+    int connectionThreads = 64;      // HTTP worker threads (connections served at once)
+    double requestsPerSecond = 100;  // per remote address, with bursts of requestBurst
+    double requestBurst = 200;
+    ExploreLimits limits;
+};
+
+class ExploreServer {
+  public:
+    explicit ExploreServer(ExploreServerOptions options);
+    ~ExploreServer();  // stops
+    ExploreServer(const ExploreServer&) = delete;
+    ExploreServer& operator=(const ExploreServer&) = delete;
+
+    // Binds the socket; throws UserError("--bind", ...) when it cannot. Returns the port.
+    int bind();
+    int port() const;
+    // Serves until stop() (from another thread or a signal handler's thread).
+    void run();
+    // bind() (if not yet) and run() on a background thread; for tests.
+    void start();
+    // Cancels running renders, stops serving, joins the background thread.
+    void stop();
+
+    struct State;  // defined in explore_server.cpp
+
+  private:
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace quaternia
