@@ -2,7 +2,7 @@
 // h_n = prod over k | n of (f^k(z) - z)^mu(n/k) (mu the Moebius function), which has degree
 // sum over k | n of mu(n/k) d^k and whose roots are the points of exact period n (the lower
 // periods divided out), found all at once by Aberth-Ehrlich and grouped into cycles.
-// docs/facts.md, Cycles and multipliers of z^2 + c.
+// docs/facts.md, Periodic points, and Cycles and multipliers of z^2 + c for what the tests check.
 #pragma once
 
 #include <complex>
