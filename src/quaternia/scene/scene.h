@@ -1,4 +1,4 @@
-// A scene: everything a render (and later a mesh or the explorer) needs, as plain values that
+// A scene: everything a render, a mesh or the explorer needs, as plain values that
 // travel by copy, so a server can hold many at once. The defaults, ranges and help of every
 // field are declared once, in the parameter table (parameters.cpp); use defaultScene() rather
 // than a default-constructed Scene, whose fields are merely zero.
