@@ -40,7 +40,7 @@ void BM_DistanceEstimate(benchmark::State& state) {
 }
 BENCHMARK(BM_DistanceEstimate);
 
-// The same points through the SIMD kernel (packet_kernels.h), 4096 per call; the argument is
+// The same points through the SIMD kernel (march_lanes.h), 4096 per call; the argument is
 // the precision (0 single, 1 double). Lane-iterations/s is the throughput of the hot loop.
 void BM_DistanceEstimateLanes(benchmark::State& state) {
     Scene scene = defaultScene();

@@ -1,5 +1,5 @@
 // `quaternia orbit` and `quaternia cycles` as a user meets them: the facts of docs/facts.md
-// (Cycles and multipliers) in text and JSON, and bad input as one line with exit code 2.
+// (Cycles and multipliers of z^2 + c) in text and JSON, and bad input as one line with exit code 2.
 #include "cmd/cli_fixture.h"
 
 namespace quaternia {

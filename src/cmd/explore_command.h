@@ -3,8 +3,8 @@
 //
 // The server runs in its own executable, quaternia-explore, beside quaternia, into which
 // `quaternia explore` turns (execv, the same process): the HTTP library pulls in OpenSSL and
-// Brotli, whose loading cost every other command about 4 ms before it started (a frame renders
-// in 150-200 ms). Both parse the options declared here.
+// Brotli, whose loading cost every other command milliseconds before it started. Both parse the
+// options declared here.
 #pragma once
 
 #include <string>

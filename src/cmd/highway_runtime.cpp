@@ -1,10 +1,10 @@
 // The run-time half of Highway's dynamic dispatch for the quaternia executable.
 //
-// HWY_DYNAMIC_DISPATCH (packet_kernels.cpp, shading_kernels.cpp) calls two functions at run
+// HWY_DYNAMIC_DISPATCH (march_lanes.cpp, shading_lanes.cpp) calls two functions at run
 // time, hwy::SupportedTargets and hwy::GetChosenTarget, which Debian's shared libhwy provides.
 // Loading that library also runs its static initialisers, among them a timer calibration
-// (hwy::platform::TimerResolution) of about 4.5 ms: every command paid that before it started,
-// and a 1080p frame renders in 150-200 ms. So quaternia defines the two here and links with
+// (hwy::platform::TimerResolution) that takes milliseconds: every command paid that before it
+// started. So quaternia defines the two here and links with
 // --as-needed, which leaves libhwy out of it (CMakeLists.txt); the tests, the benchmarks and
 // quaternia-explore, which use more of Highway's run time, link the library.
 //

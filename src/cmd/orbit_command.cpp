@@ -169,7 +169,7 @@ int runOrbitCommand(const OrbitCommandOptions& options) {
     OrbitOptions orbitOptions;
     orbitOptions.maxIterations = options.maxIterations;
     OrbitResult result = analyzeOrbit(p, z0, orbitOptions);
-    // Connectedness is a statement about the complex restriction's K (docs/facts.md, Mandelbrot).
+    // Connectedness is about the complex restriction's K (docs/facts.md, Mandelbrot set).
     std::optional<Connectedness> k;
     if (auto restriction = restrictToComplexPlane(p)) {
         k = connectedness(restriction->polynomial, options.maxIterations);

@@ -2,7 +2,7 @@
 //
 // If every coefficient of an eq. 2.10 polynomial lies in one plane C_u = span{1, u} (u a unit
 // imaginary quaternion), C_u is invariant and the polynomial acts on it as a complex polynomial
-// in x + y i <-> x + y u (docs/facts.md, complex restriction): the terms commute there, so
+// in x + y i <-> x + y u (docs/facts.md, Complex restriction): the terms commute there, so
 // a0 z a1 ... z ak becomes (a0 a1 ... ak) z^k. Complex dynamics (cycles, multipliers, basins,
 // the Mandelbrot set) works on that restriction.
 #pragma once

@@ -53,7 +53,8 @@ TEST(ComplexPolynomial, AberthFindsAllRootsWithMultiplicity) {
             nearest = std::min(nearest, std::abs(r - expected));
         EXPECT_LT(nearest, 1e-12) << expected;
     }
-    // Fixed points of z^2 - 1: (1 +- sqrt 5) / 2 (docs/facts.md).
+    // Fixed points of z^2 - 1: (1 +- sqrt 5) / 2 (docs/facts.md, Cycles and multipliers of
+    // z^2 + c).
     std::vector<Complex> fixed = polynomialRoots(ComplexPolynomial({-1, -1, 1}));
     std::sort(fixed.begin(), fixed.end(), [](Complex a, Complex b) { return a.real() < b.real(); });
     EXPECT_NEAR(fixed[0].real(), -0.6180339887498949, 1e-14);

@@ -48,7 +48,8 @@ Quaternion evaluateTerm(const Term& term, const Quaternion& z) {
 
 // Forward-mode differentiation of a0 z a1 ... z ad: with v the product so far and dv its
 // derivative in direction h, appending "z a" gives v z a and (dv z + v h) a. Unrolled, this is
-// the sum over each z of (product left of it) h (product right of it) (docs/facts.md).
+// the sum over each z of (product left of it) h (product right of it) (docs/facts.md,
+// Distance estimate).
 Quaternion differentiateTerm(const Term& term, const Quaternion& z, const Quaternion& h) {
     const std::vector<Quaternion>& a = term.coefficients;
     Quaternion value = a[0];
@@ -443,7 +444,8 @@ Quaternion Polynomial::derivative(const Quaternion& z, const Quaternion& h) cons
     return sum;
 }
 
-// Each term's derivative is a sum of d products whose norm is A_T |z|^(d-1) |h| (docs/facts.md).
+// Each term's derivative is a sum of d products whose norm is A_T |z|^(d-1) |h| (docs/facts.md,
+// Distance estimate).
 double Polynomial::derivativeNormBound(double r) const {
     double bound = 0;
     for (const Term& term : terms_) {
@@ -476,7 +478,8 @@ std::optional<PowerForm> Polynomial::powerForm() const {
 }
 
 // With one top term |T(u)| = A_T exactly. With several, the terms can cancel (z i z - i z^2
-// vanishes on span{1, i}, docs/facts.md), so a branch and bound over S^3 certifies the minimum.
+// vanishes on span{1, i}, docs/facts.md, Escape radius and bounding sphere), so a branch and bound
+// over S^3 certifies the minimum.
 double Polynomial::topDegreeMinimum() const {
     const TopDegreePart part(terms_, degree());
     if (part.terms().size() == 1) return normProduct(part.terms()[0]);

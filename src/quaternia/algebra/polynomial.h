@@ -36,7 +36,7 @@ class Polynomial {
 
     Quaternion evaluate(const Quaternion& z) const;
     // The derivative of p at z in direction h: for each term, the sum over each of its z's of
-    // (the product left of that z) h (the product right of it) (docs/facts.md).
+    // (the product left of that z) h (the product right of it) (docs/facts.md, Distance estimate).
     Quaternion derivative(const Quaternion& z, const Quaternion& h) const;
     // P'(r) where P(r) = sum over terms of (product of coefficient norms) r^degree: an upper
     // bound on the operator norm of the derivative at any z with |z| = r.

@@ -1,6 +1,6 @@
 // Polynomials: construction, the derivative against finite differences, the power form, the
-// certified minimum of the top-degree part and the escape radius (docs/facts.md, Escape radius),
-// and the canonical text's round trip through the parser.
+// certified minimum of the top-degree part and the escape radius (docs/facts.md, Escape radius and
+// bounding sphere), and the canonical text's round trip through the parser.
 #include "quaternia/algebra/polynomial.h"
 
 #include <gtest/gtest.h>
@@ -102,7 +102,8 @@ TEST(Polynomial, DetectsPowerForm) {
 }
 
 TEST(Polynomial, EscapeRadiusOfQuadraticIsClosedForm) {
-    // R_c = (1 + sqrt(1 + 4|c|)) / 2 (docs/facts.md): 1, 1.2071, 1.6180, 2, 2.3028.
+    // R_c = (1 + sqrt(1 + 4|c|)) / 2 (docs/facts.md, Escape radius and bounding sphere):
+    // 1, 1.2071, 1.6180, 2, 2.3028.
     const double norms[] = {0, 0.25, 1, 2, 3};
     const double expected[] = {1, 1.2071, 1.6180, 2, 2.3028};
     for (int n = 0; n < 5; ++n) {

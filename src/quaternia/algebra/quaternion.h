@@ -1,5 +1,5 @@
 // Quaternions q = w + x i + y j + z k, templated on the scalar so that the same algebra runs on
-// float, double and (later) SIMD lanes, as Embree's QuaternionT<T>.
+// float and double, as Embree's QuaternionT<T> (the SIMD lanes use fractal/julia_steps-inl.h).
 //
 // A default-constructed Quaternion is zero: it is an element of the algebra H, not a rotation.
 // Multiplication is Hamilton's product (Hamilton 1843; seed paper eqs. 2.7-2.9):

@@ -84,7 +84,7 @@ TEST(Quaternion, SquareMatchesProduct) {
     for (int n = 0; n < 1000; ++n) {
         const Quaternion q = randomQuaternion(rng, 2.0);
         expectNear(square(q), q * q, 1e-14);
-        // q^2 = (a^2 - |v|^2) + 2 a v (docs/facts.md).
+        // q^2 = (a^2 - |v|^2) + 2 a v (docs/facts.md, Algebra).
         const double v2 = q.x * q.x + q.y * q.y + q.z * q.z;
         EXPECT_NEAR(square(q).w, q.w * q.w - v2, 1e-14);
     }

@@ -9,8 +9,8 @@ ComplexPolynomial quadratic(Complex c) {
     return ComplexPolynomial({c, 0, 1});
 }
 
-// For z^2 + c, K_c is connected exactly when c is in the Mandelbrot set (docs/facts.md), and a
-// Cantor set otherwise, including the boundary points -2, 1/4, -3/4 and i.
+// For z^2 + c, K_c is connected exactly when c is in the Mandelbrot set (docs/facts.md, Mandelbrot
+// set), and a Cantor set otherwise, including the boundary points -2, 1/4, -3/4 and i.
 TEST(Connectedness, QuadraticIsConnectedExactlyOnM) {
     const Complex rabbit(-0.12256116687665, 0.74486176661974);
     for (Complex c : {Complex(-2), Complex(0.25), Complex(-0.75), Complex(0, 1), Complex(0),

@@ -1,7 +1,7 @@
-// Cycles and their multipliers (seed paper section 2.2; docs/facts.md, Cycles and multipliers, and
-// Cycles of z^2 + c in H). A cycle z_0 -> z_1 -> ... -> z_{n-1} -> z_0 of a complex map has the
-// multiplier lambda = (f^n)'(z_0) = prod f'(z_k); a cycle of a quaternion map has the 4x4
-// Jacobian of f^n, the product of the Jacobians of p at the cycle points, and its eigenvalues.
+// Cycles and their multipliers (seed paper section 2.2; docs/facts.md, Cycles and multipliers of
+// z^2 + c, and Cycles of z^2 + c in H). A cycle z_0 -> z_1 -> ... -> z_{n-1} -> z_0 of a complex
+// map has the multiplier lambda = (f^n)'(z_0) = prod f'(z_k); a cycle of a quaternion map has the
+// 4x4 Jacobian of f^n, the product of the Jacobians of p at the cycle points, and its eigenvalues.
 #pragma once
 
 #include <array>

@@ -82,7 +82,8 @@ TEST(Cycle, QuaternionFixedPointOfCEqualsIIsSaddle) {
 }
 
 TEST(Cycle, JacobianAtQuarterIsHalfIdentity) {
-    // c = 0.1875: the fixed point 0.25 has Jacobian 2 * 0.25 I (docs/facts.md).
+    // c = 0.1875: the fixed point 0.25 has Jacobian 2 * 0.25 I (docs/facts.md, Cycles of
+    // z^2 + c in H).
     Polynomial p = compileFormula("z^2 + c", Quaternion(0.1875));
     Matrix4 j = jacobian(p, Quaternion(0.25));
     for (int r = 0; r < 4; ++r) {

@@ -27,7 +27,8 @@ MandelbrotEstimate estimateMandelbrot(std::complex<double> c, int maxIterations,
 bool inMandelbrotSet(std::complex<double> c, int maxIterations, int degree = 2);
 
 // The quaternion Mandelbrot set of z^2 + c, iterated in H. The orbit of 0 stays in span{1, c},
-// so membership equals that of Re c + |Im c| i (docs/facts.md); tests hold the two together.
+// so membership equals that of Re c + |Im c| i (docs/facts.md, Mandelbrot set); tests
+// hold the two together.
 bool inQuaternionMandelbrotSet(const Quaternion& c, int maxIterations);
 
 }  // namespace quaternia

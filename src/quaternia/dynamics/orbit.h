@@ -1,6 +1,7 @@
 // The fate of one orbit z_0, z_1 = p(z_0), ... of a quaternion polynomial (complex maps are the
 // case where every coefficient and z_0 lie in one plane C_u): escape, landing on a cycle, or
-// convergence to an attracting cycle (seed paper section 2.2; docs/facts.md, Cycles and multipliers).
+// convergence to an attracting cycle (seed paper section 2.2; docs/facts.md, Cycles and multipliers
+// of z^2 + c).
 //
 // Semantics, with tol = tolerance * max(1, largest |z_k| so far) (rounding grows with the
 // orbit's scale):

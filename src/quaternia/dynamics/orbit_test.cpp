@@ -12,7 +12,7 @@ namespace {
 using Complex = std::complex<double>;
 using testing::expectNear;
 
-// docs/facts.md, Cycles and multipliers: the rabbit and the airplane.
+// docs/facts.md, Cycles and multipliers of z^2 + c: the rabbit and the airplane.
 const Quaternion kRabbit(-0.12256116687665, 0.74486176661974, 0, 0);
 const Quaternion kAirplane(-1.75487766624669);
 
@@ -49,7 +49,8 @@ TEST(Orbit, LandingOnAnAttractingCycleIsPreperiodicConvergingIsAttracted) {
 }
 
 TEST(Orbit, RepellingFixedPointsOfMinusOne) {
-    // Fixed points (1 +- sqrt 5) / 2 with multipliers 1 +- sqrt 5 (docs/facts.md).
+    // Fixed points (1 +- sqrt 5) / 2 with multipliers 1 +- sqrt 5 (docs/facts.md, Cycles and
+    // multipliers of z^2 + c).
     const double phi = (1 + std::sqrt(5.0)) / 2;
     for (double z : {phi, 1 - phi}) {
         OrbitResult r = orbitOf(-1.0, z);
@@ -73,7 +74,8 @@ TEST(Orbit, ParabolicFixedPointIsNeutral) {
 }
 
 TEST(Orbit, CriticalOrbitOfIIsStrictlyPreperiodic) {
-    // 0 -> i -> -1+i -> -i -> -1+i: preperiod 2, period 2, multiplier 4 + 4i (docs/facts.md).
+    // 0 -> i -> -1+i -> -i -> -1+i: preperiod 2, period 2, multiplier 4 + 4i
+    // (docs/facts.md, Cycles and multipliers of z^2 + c).
     OrbitResult r = orbitOf(kUnitI, 0.0);
     EXPECT_EQ(r.fate, OrbitFate::Preperiodic);
     EXPECT_EQ(r.preperiod, 2);

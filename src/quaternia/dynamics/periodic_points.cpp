@@ -25,7 +25,7 @@ int moebius(int n) {
 constexpr double kHuge = 1e100;
 
 // f/f' of h_n: 1 / sum over k | n of mu(n/k) g_k'(z) / g_k(z), with g_k(z) = f^k(z) - z,
-// computed by iterating f (docs/facts.md; no coefficients of h_n needed).
+// computed by iterating f (docs/facts.md, Periodic points; no coefficients of h_n needed).
 Complex newtonRatio(const ComplexPolynomial& f, const std::vector<int>& mu, Complex z) {
     const int n = int(mu.size()) - 1;
     Complex w = z, dw = 1, logDerivative = 0, sum = 0;

@@ -26,8 +26,8 @@ TEST(PeriodicPoints, CountsPointsOfExactPeriod) {
 }
 
 TEST(PeriodicPoints, FixedPointsAndTwoCycleOfMinusOne) {
-    // docs/facts.md: fixed points 1.61803 (multiplier 3.23607) and -0.61803 (-1.23607), both
-    // repelling; the superattracting 2-cycle {0, -1}.
+    // docs/facts.md, Cycles and multipliers of z^2 + c: fixed points 1.61803 (multiplier 3.23607)
+    // and -0.61803 (-1.23607), both repelling; the superattracting 2-cycle {0, -1}.
     PeriodicPoints fixed = periodicPoints(quadratic(-1), 1);
     ASSERT_EQ(fixed.cycles.size(), 2u);
     const double phi = (1 + std::sqrt(5.0)) / 2;
@@ -53,7 +53,8 @@ TEST(PeriodicPoints, FixedPointsAndTwoCycleOfMinusOne) {
 }
 
 TEST(PeriodicPoints, RepellingTwoCycleOfI) {
-    // {-1+i, -i} with multiplier 4(c + 1) = 4 + 4i (docs/facts.md).
+    // {-1+i, -i} with multiplier 4(c + 1) = 4 + 4i (docs/facts.md, Cycles and multipliers of
+    // z^2 + c).
     PeriodicPoints two = periodicPoints(quadratic(Complex(0, 1)), 2);
     ASSERT_EQ(two.cycles.size(), 1u);
     const PeriodicCycle& cycle = two.cycles[0];

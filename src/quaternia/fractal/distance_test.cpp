@@ -22,7 +22,8 @@ Quaternion randomUnit(std::mt19937& rng) {
 }
 
 // c = 0: z_n = z^(2^n) and |z'_n| = 2^n |z|^(2^n - 1), so the estimate is 0.5 r ln r at every
-// iteration count (docs/facts.md), below the true distance r - 1 for 1 < r < 4.92.
+// iteration count (docs/facts.md, Distance estimate), below the true distance r - 1 for
+// 1 < r < 4.92.
 TEST(DistanceEstimate, IsHalfRLogRForZeroC) {
     JuliaSet set = quadratic(Quaternion{}, 50);
     std::mt19937 rng(7);
@@ -187,7 +188,7 @@ TEST(JuliaSet, ConjugationRotatesTheSet) {
 }
 
 // K lies in the ball of radius R_c, attained for real c <= 0 at beta = R_c, and K meets the real
-// axis in [-beta, beta] (docs/facts.md).
+// axis in [-beta, beta] (docs/facts.md, Escape radius and bounding sphere).
 TEST(JuliaSet, EscapeRadiusIsTightForNegativeRealC) {
     for (double c : {0.0, -0.5, -1.0, -2.0}) {
         JuliaSet set = quadratic(Quaternion(c), 25);

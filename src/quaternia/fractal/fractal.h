@@ -1,5 +1,5 @@
 // The rendered object: a quaternion Julia set seen through a 3D slice. This is the distance
-// field every consumer shares (the marchers, shading, and later meshes and the explorer): it
+// field every consumer shares (the marchers, shading, the mesher and the explorer): it
 // answers in 3D world coordinates, with distances already made safe for 3D steps.
 #pragma once
 

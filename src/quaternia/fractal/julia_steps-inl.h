@@ -1,6 +1,6 @@
 // The iteration formulas of the hot loops, written once for any lane type V: plain double in the
 // scalar reference (distance.cpp) and Highway SIMD vectors of float or double in the packet
-// kernels (packet_kernels.cpp). Only +, - and * are used, so every V with those operators runs
+// kernels (march_lanes.cpp). Only +, - and * are used, so every V with those operators runs
 // the same formula; Hamilton's product and the square follow quaternion.h (eqs. 2.7-2.9 of the
 // seed paper).
 //

@@ -30,7 +30,8 @@ class Slice {
     // its Jacobian, including the tilt of the slice (w depends on x, y and z) and the rotation.
     const std::array<Quaternion, 3>& tangents() const { return tangents_; }
     // A 3D step of length L moves s(p) by at most L / |s^_w|: multiply a 4D distance by this
-    // factor to get a safe 3D step (docs/methods.md). The rotation is an isometry.
+    // factor to get a safe 3D step (docs/methods.md, Slices and the step factor). The rotation is
+    // an isometry.
     double stepScale() const { return stepScale_; }
     const Quaternion& left() const { return left_; }
     const Quaternion& right() const { return right_; }

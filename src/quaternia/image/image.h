@@ -21,8 +21,8 @@ struct Rgba {
 
 // Allocates zeroed memory with calloc and leaves it as it is where a vector would value-
 // initialise its elements (which for zero-initialised, implicit-lifetime T such as Rgba is the
-// same bytes). Why: a frame-sized vector<Rgba> is zeroed on one thread before the render starts
-// (2 to 5 ms at 1080p); calloc gets large blocks from mmap already zero, so the pages are
+// same bytes). Why: a frame-sized vector<Rgba> is zeroed on one thread before the render starts;
+// calloc gets large blocks from mmap already zero, so the pages are
 // faulted in by the threads that first write them, in parallel, and are still in cache then.
 template <class T>
 struct ZeroedAllocator {

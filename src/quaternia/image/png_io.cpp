@@ -53,7 +53,7 @@ void onPngWarning(png_structp, png_const_charp) {}  // library code never prints
 // Clamped to [0, 1] (NaN to 0), then rounded to the nearest of 0 .. 65535, big-endian as PNG
 // stores it; returns the sample's end. In double: a float times 65535 keeps too few fractional
 // bits to round reliably. The grey depth pass's formula; colour images are quantised in lanes
-// by quantisePngSamples (png_kernels.h), to exactly what this gives.
+// by quantisePngSamples (png_lanes.h), to exactly what this gives.
 uint8_t* putSample16(uint8_t* out, float value) {
     // Selects rather than branches, so that the loop over pixels vectorises.
     const float clamped = value > 0.0f ? (value < 1.0f ? value : 1.0f) : 0.0f;

@@ -1,4 +1,4 @@
-// The PNG kernels (png_kernels.h) against the scalar formulas they replaced, written out here,
+// The PNG kernels (png_lanes.h) against the scalar formulas they replaced, written out here,
 // on every instruction set compiled in and supported here. Equal means byte for byte: the PNGs
 // must not change.
 #include "quaternia/image/png_lanes.h"

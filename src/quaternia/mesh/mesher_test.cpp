@@ -1,6 +1,6 @@
-// The mesher against analytic answers: c = 0 is the unit ball (docs/facts.md: volume 4 pi / 3, area
-// 4 pi), a real c gives a solid of revolution about the real axis, and every vertex lies on
-// the surface the renderer draws.
+// The mesher against analytic answers: c = 0 is the unit ball (docs/facts.md, Symmetries:
+// volume 4 pi / 3, area 4 pi), a real c gives a solid of revolution about the real axis, and every
+// vertex lies on the surface the renderer draws.
 #include "quaternia/mesh/mesher.h"
 
 #include <gtest/gtest.h>

@@ -44,7 +44,7 @@ TEST(PlaneRender, EveryKindIsInTheParameterTable) {
 
 TEST(PlaneRender, SliceThroughComplexPlaneEqualsComplexJuliaImage) {
     // With c in span{1, i}, the (1, i) plane of H is invariant and K meets it in the complex
-    // filled Julia set (docs/facts.md, complex restriction): the same picture, pixel for pixel.
+    // filled Julia set (docs/facts.md, Complex restriction): the same picture, pixel for pixel.
     for (std::vector<double> c : {std::vector<double>{-0.4, 0.6, 0, 0}, {-0.4, -0.6, 0, 0}}) {
         Scene julia = planeScene("julia", c, 64, 48, 2);
         setParameter(julia, "plane.center", std::vector<double>{0.1, -0.05});

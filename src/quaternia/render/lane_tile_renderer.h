@@ -1,6 +1,6 @@
 // The SIMD path of render(): a tile's camera rays marched together in lanes, then its hits
 // shaded in batches (normals, shadow rays, ambient occlusion), each batch one call of the packet
-// kernels (packet_kernels.h), and lit together (shading_kernels.h, Shader::light's formula), so
+// kernels (march_lanes.h), and lit together (shading_lanes.h, Shader::light's formula), so
 // both paths make the same picture up to the precision of the lanes.
 #pragma once
 

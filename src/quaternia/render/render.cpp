@@ -117,7 +117,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     std::vector<ThreadTotals> totals(parallel.threads);
     const int samples = settings.samples;
 
-    // The SIMD path where the formula and marcher allow it (packet_kernels.h).
+    // The SIMD path where the formula and marcher allow it (march_lanes.h).
     std::optional<LaneFractal> lanes;
     if (settings.engine == RenderEngine::Simd && settings.method == MarchMethod::SphereTracing)
         lanes = LaneFractal::from(fractal, settings.precision);

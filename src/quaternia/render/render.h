@@ -63,11 +63,11 @@ RenderResult render(const Scene& scene, const RenderOptions& options = {});
 // cancel flag, their progress (if set) called with the fraction of tiles done, and square tiles
 // of 64 pixels where the image has at least kMinimumHugeTiles of them, else of 32 pixels where
 // it has at least kMinimumLargeTiles, else 16. Large tiles make long batches for the SIMD path
-// (each batch ends with lanes idling while its last rays finish: 64-pixel tiles render 1080p
-// frames 2.6% faster than 32); small images need the small tiles to keep every thread busy, and
+// (each batch ends with lanes idling while its last rays finish, so fewer, longer batches idle
+// less); small images need the small tiles to keep every thread busy, and
 // kMinimumHugeTiles still gives 64 cores about 8 tiles each. The size depends on the image
 // alone, so the picture is the same for any number of threads (it is the same for any of these
-// sizes too: they are multiples of the cone blocks, render_packets.h).
+// sizes too: they are multiples of the cone blocks, lane_tile_renderer.h).
 inline constexpr int64_t kMinimumLargeTiles = 128;
 inline constexpr int64_t kMinimumHugeTiles = 480;
 ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int height);

@@ -1,4 +1,4 @@
-// The shading kernels (shading_kernels.h) against the scalar formulas they mirror, on every
+// The shading kernels (shading_lanes.h) against the scalar formulas they mirror, on every
 // instruction set compiled in and supported here.
 #include "quaternia/render/lanes/shading_lanes.h"
 

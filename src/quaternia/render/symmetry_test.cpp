@@ -1,4 +1,4 @@
-// Symmetries of quaternion Julia sets (docs/facts.md) seen in whole renders.
+// Symmetries of quaternion Julia sets (docs/facts.md, Symmetries) seen in whole renders.
 #include <gtest/gtest.h>
 
 #include <cmath>

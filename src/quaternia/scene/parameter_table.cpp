@@ -1,6 +1,6 @@
 // The parameter table: every scene setting declared once, with its name, type, default, range
-// and help. This one table drives scene files, --set, --help, validation and (later) the
-// explorer's controls; parameters.cpp holds the machinery that reads it.
+// and help. This one table drives scene files, --set, --help, validation and the explorer's
+// controls (/api/parameters); parameters.cpp holds the machinery that reads it.
 #include <utility>
 
 #include "quaternia/scene/parameters.h"

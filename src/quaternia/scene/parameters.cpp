@@ -371,8 +371,9 @@ void validateScene(const Scene& scene) {
     const SliceSettings& slice = scene.slice;
     double normalLength = norm(slice.normal);
     if (normalLength == 0) throw UserError("slice.normal", "slice.normal must not be zero");
-    // The 3D step of a marcher is the 4D distance times |s^_w| (docs/methods.md), so a w component
-    // that is merely tiny would stall every ray; 1e-6 of the normal's length is the floor.
+    // The 3D step of a marcher is the 4D distance times |s^_w| (docs/methods.md, Slices and the
+    // step factor), so a w component that is merely tiny would stall every ray; 1e-6 of the
+    // normal's length is the floor.
     if (std::abs(slice.normal[3]) < 1e-6 * normalLength)
         throw UserError("slice.normal",
                         "slice.normal needs a w component (the 4th): POV-Ray's slice computes "

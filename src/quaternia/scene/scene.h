@@ -1,4 +1,4 @@
-// A scene: everything a render (and later a mesh or the explorer) needs, as plain values that
+// A scene: everything a render, a mesh or the explorer needs, as plain values that
 // travel by copy, so a server can hold many at once. The defaults, ranges and help of every
 // field are declared once, in the parameter table (parameters.cpp); use defaultScene() rather
 // than a default-constructed Scene, whose fields are merely zero.
@@ -42,7 +42,7 @@ enum class MarchMethod { SphereTracing, FixedStep };
 // Opaque: the image is composited over the background gradient, alpha 1.
 enum class AlphaMode { Coverage, Opaque };
 
-// Simd: the packet kernels (packet_kernels.h) for s z^d + c with sphere tracing, in float or
+// Simd: the packet kernels (march_lanes.h) for s z^d + c with sphere tracing, in float or
 // double lanes; everything else, and Scalar, runs the scalar double reference (march.h).
 enum class RenderEngine { Simd, Scalar };
 enum class Precision { Single, Double };

@@ -1,7 +1,7 @@
 // User errors: bad scene keys, values, formulas and paths. They carry the key (or what was bad)
 // and a one-line message, are thrown by the library and caught once at the boundary (the CLI's
-// main, later the server), which prints the message and exits with code 2. Invariant violations
-// are not user errors; they are checked with assertions in tests.
+// main, which prints the message and exits with code 2; the server answers 400). Invariant
+// violations are not user errors; they are checked with assertions in tests.
 #pragma once
 
 #include <stdexcept>

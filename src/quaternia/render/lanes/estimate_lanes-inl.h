@@ -1,11 +1,11 @@
-// The distance estimate in SIMD lanes, shared by the kernels of packet_kernels.cpp: the
+// The distance estimate in SIMD lanes, shared by the kernels of march_lanes.cpp: the
 // fractal's constants as lanes, JuliaSet::estimate for K vectors of points at once
 // (estimateLanes), and the estimates along the rays held in lanes (estimateAlongRays).
 //
-// Like julia_lanes-inl.h, this file has no namespace of its own: packet_kernels.cpp includes it
+// Like julia_steps-inl.h, this file has no namespace of its own: march_lanes.cpp includes it
 // inside its per-target namespace, once per SIMD target (the HWY_TARGET_TOGGLE guard below lets
-// it in again for each), after hwy/highway.h, julia_lanes-inl.h, lane_state.h and
-// packet_kernels.h, with hn naming the target's Highway namespace.
+// it in again for each), after hwy/highway.h, julia_steps-inl.h, lane_state.h and
+// march_lanes.h, with hn naming the target's Highway namespace.
 
 #if defined(QUATERNIA_ESTIMATE_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef QUATERNIA_ESTIMATE_LANES_INL_H_

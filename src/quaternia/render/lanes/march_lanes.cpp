@@ -1,4 +1,4 @@
-// SIMD kernels of packet_kernels.h, compiled once per instruction set by Highway's
+// SIMD kernels of march_lanes.h, compiled once per instruction set by Highway's
 // foreach_target and chosen at run time (HWY_DYNAMIC_DISPATCH). See the header for what each
 // computes; the scalar reference each one mirrors is named beside it.
 

@@ -1,5 +1,5 @@
-// SIMD kernels of shading_kernels.h, compiled once per instruction set by Highway's
-// foreach_target and chosen at run time (HWY_DYNAMIC_DISPATCH), as packet_kernels.cpp.
+// SIMD kernels of shading_lanes.h, compiled once per instruction set by Highway's
+// foreach_target and chosen at run time (HWY_DYNAMIC_DISPATCH), as march_lanes.cpp.
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "quaternia/render/lanes/shading_lanes.cpp"
