@@ -7,6 +7,7 @@ packages=(
   g++ cmake ninja-build pkg-config
   libpng-dev zlib1g-dev libtomlplusplus-dev libcli11-dev libhwy-dev
   libgtest-dev libbenchmark-dev
+  nlohmann-json3-dev
   admesh
   libcpp-httplib-dev
   python3 chromium chromium-driver python3-selenium

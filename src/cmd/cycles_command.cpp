@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <vector>
 
 #include "cmd/dynamics_input.h"
@@ -75,25 +74,28 @@ void printTable(const CyclesCommandOptions& options, const Quaternion& c,
 
 void printJson(const CyclesCommandOptions& options, const Quaternion& c,
                const ComplexRestriction& map, const PeriodicPoints& points) {
-    std::ostringstream json;
-    json << "{\"command\": \"cycles\", \"formula\": " << jsonString(options.formula)
-         << ", \"c\": " << jsonQuaternion(c) << ", \"plane_axis\": " << jsonQuaternion(map.axis)
-         << ", \"period\": " << points.period << ", \"points\": " << points.count
-         << ", \"cycles\": [";
-    for (std::size_t i = 0; i < points.cycles.size(); ++i) {
-        const PeriodicCycle& cycle = points.cycles[i];
-        json << (i ? ", " : "") << "{\"period\": " << cycle.period << ", \"points\": [";
-        for (std::size_t k = 0; k < cycle.points.size(); ++k)
-            json << (k ? ", " : "") << jsonComplex(cycle.points[k]);
-        json << "], \"multiplier\": " << jsonComplex(cycle.multiplier)
-             << ", \"class\": " << jsonString(toString(cycle.classification.stability))
-             << ", \"unsure\": " << (cycle.classification.unsure ? "true" : "false")
-             << ", \"degenerate\": " << (cycle.degenerate ? "true" : "false")
-             << ", \"multiplicity\": " << cycle.multiplicity
-             << ", \"complete\": " << (cycle.complete ? "true" : "false")
-             << ", \"residual\": " << jsonNumber(cycle.residual) << "}";
+    Json json;
+    json["command"] = "cycles";
+    json["formula"] = options.formula;
+    json["c"] = c;
+    json["plane_axis"] = map.axis;
+    json["period"] = points.period;
+    json["points"] = points.count;
+    json["cycles"] = Json::array();
+    for (const PeriodicCycle& cycle : points.cycles) {
+        Json entry;
+        entry["period"] = cycle.period;
+        entry["points"] = cycle.points;
+        entry["multiplier"] = cycle.multiplier;
+        entry["class"] = toString(cycle.classification.stability);
+        entry["unsure"] = cycle.classification.unsure;
+        entry["degenerate"] = cycle.degenerate;
+        entry["multiplicity"] = cycle.multiplicity;
+        entry["complete"] = cycle.complete;
+        entry["residual"] = cycle.residual;
+        json["cycles"].push_back(std::move(entry));
     }
-    std::printf("%s]}\n", json.str().c_str());
+    std::printf("%s\n", jsonText(json).c_str());
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // `quaternia orbit` and `quaternia cycles` as a user meets them: the facts of docs/facts.md
 // (Cycles and multipliers of z^2 + c) in text and JSON, and bad input as one line with exit code 2.
 #include "cmd/cli_fixture.h"
+#include "quaternia/scene/json.h"
 
 namespace quaternia {
 namespace {
@@ -28,10 +29,12 @@ TEST_F(DynamicsCli, OrbitOfMinusOneIsSuperattracting2Cycle) {
     expectHas(out, "cycle: 0 -> -1");
     expectHas(out, "multiplier: 0 (|lambda| = 0), superattracting");
     expectHas(out, "K: connected");
-    std::string json = ok("orbit --c -1 --json");
-    expectHas(json, "\"fate\": \"periodic\"");
-    expectHas(json, "\"period\": 2, \"points\": [[0, 0, 0, 0], [-1, 0, 0, 0]]");
-    expectHas(json, "\"connectedness\": {\"connected\": true, \"cantor\": false");
+    Json json = Json::parse(ok("orbit --c -1 --json"));
+    EXPECT_EQ(json["fate"], "periodic") << json;
+    EXPECT_EQ(json["cycle"]["period"], 2) << json;
+    EXPECT_EQ(json["cycle"]["points"], Json::parse("[[0, 0, 0, 0], [-1, 0, 0, 0]]")) << json;
+    EXPECT_EQ(json["connectedness"]["connected"], true) << json;
+    EXPECT_EQ(json["connectedness"]["cantor"], false) << json;
 }
 
 TEST_F(DynamicsCli, OrbitOfIIsStrictlyPreperiodicAndSaddleFixedPoint) {
@@ -47,12 +50,12 @@ TEST_F(DynamicsCli, OrbitOfIIsStrictlyPreperiodicAndSaddleFixedPoint) {
 }
 
 TEST_F(DynamicsCli, OrbitInQuaternionSliceAndEscape) {
-    std::string rabbit =
-        ok("orbit --c '-0.12256116687665+0.74486176661974i' --z0 "
-           "'0.05+0.02i+0.03j' --json");
-    expectHas(rabbit, "\"fate\": \"attracted\"");
-    expectHas(rabbit, "\"period\": 3");
-    expectHas(rabbit, "\"class_in_h\": \"superattracting\"");
+    Json rabbit =
+        Json::parse(ok("orbit --c '-0.12256116687665+0.74486176661974i' --z0 "
+                       "'0.05+0.02i+0.03j' --json"));
+    EXPECT_EQ(rabbit["fate"], "attracted") << rabbit;
+    EXPECT_EQ(rabbit["period"], 3) << rabbit;
+    EXPECT_EQ(rabbit["cycle"]["class_in_h"], "superattracting") << rabbit;
     std::string escape = ok("orbit --c 1");
     expectHas(escape, "escapes at iteration 2");
     expectHas(escape, "K: a Cantor set");
@@ -63,9 +66,11 @@ TEST_F(DynamicsCli, CyclesOfMinusOne) {
     expectHas(fixed, "2 points of period 1 in 2 cycles");
     expectHas(fixed, "3.236067977                  3.236067977   repelling        1.618033989");
     expectHas(fixed, "-1.236067977                 1.236067977   repelling        -0.6180339887");
-    std::string two = ok("cycles --c -1 --period 2 --json");
-    expectHas(two, "\"cycles\": [{\"period\": 2, \"points\": [[0, 0], [-1, 0]]");
-    expectHas(two, "\"class\": \"superattracting\"");
+    Json two = Json::parse(ok("cycles --c -1 --period 2 --json"));
+    ASSERT_EQ(two["cycles"].size(), 1u) << two;
+    EXPECT_EQ(two["cycles"][0]["period"], 2) << two;
+    EXPECT_EQ(two["cycles"][0]["points"], Json::parse("[[0, 0], [-1, 0]]")) << two;
+    EXPECT_EQ(two["cycles"][0]["class"], "superattracting") << two;
 }
 
 TEST_F(DynamicsCli, CyclesOfIAndInPlaneOfJ) {

@@ -2,13 +2,13 @@
 
 #include <chrono>
 #include <cstdio>
-#include <sstream>
 
 #include "cmd/scene_command.h"
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/mesh/mesh_check.h"
 #include "quaternia/mesh/mesh_io.h"
 #include "quaternia/mesh/mesher.h"
+#include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/util/atomic_file.h"
 
@@ -41,32 +41,38 @@ void printSummary(const MeshCommandOptions& options, const Scene& scene, MeshFor
             stats.threads == 1 ? "" : "s");
         return;
     }
-    std::ostringstream json;
-    json.precision(9);
-    json << "{\"command\": \"mesh\", \"output\": " << jsonString(options.output)
-         << ", \"format\": \"" << meshFormatName(format) << "\""
-         << ", \"formula\": " << jsonString(scene.fractal.formula) << ", \"c\": ["
-         << scene.fractal.c.w << ", " << scene.fractal.c.x << ", " << scene.fractal.c.y << ", "
-         << scene.fractal.c.z << "], \"resolution\": " << scene.mesh.resolution
-         << ", \"iso\": " << scene.mesh.iso << ", \"min_component\": " << scene.mesh.minComponent
-         << ", \"cell_size\": " << stats.grid.cellSize << ", \"grid\": [" << stats.grid.cells[0]
-         << ", " << stats.grid.cells[1] << ", " << stats.grid.cells[2]
-         << "], \"triangles\": " << check.triangles << ", \"vertices\": " << check.vertices
-         << ", \"components\": " << check.components
-         << ", \"dropped_components\": " << stats.droppedComponents
-         << ", \"volume\": " << check.volume << ", \"area\": " << check.area
-         << ", \"watertight\": " << (check.watertight() ? "true" : "false")
-         << ", \"boundary_edges\": " << check.boundaryEdges
-         << ", \"non_manifold_edges\": " << check.nonManifoldEdges
-         << ", \"misoriented_edges\": " << check.misorientedEdges
-         << ", \"non_manifold_vertices\": " << check.nonManifoldVertices
-         << ", \"degenerate_triangles\": " << check.degenerateTriangles
-         << ", \"lattice_blocks\": " << stats.latticeBlocks
-         << ", \"near_blocks\": " << stats.nearBlocks << ", \"blocks\": " << stats.blocks
-         << ", \"closure_blocks\": " << stats.closureBlocks
-         << ", \"estimates\": " << stats.estimates << ", \"threads\": " << stats.threads
-         << ", \"mesh_seconds\": " << stats.seconds << ", \"seconds\": " << seconds << "}";
-    std::printf("%s\n", json.str().c_str());
+    Json json;
+    json["command"] = "mesh";
+    json["output"] = options.output;
+    json["format"] = meshFormatName(format);
+    json["formula"] = scene.fractal.formula;
+    json["c"] = scene.fractal.c;
+    json["resolution"] = scene.mesh.resolution;
+    json["iso"] = scene.mesh.iso;
+    json["min_component"] = scene.mesh.minComponent;
+    json["cell_size"] = stats.grid.cellSize;
+    json["grid"] = {stats.grid.cells[0], stats.grid.cells[1], stats.grid.cells[2]};
+    json["triangles"] = check.triangles;
+    json["vertices"] = check.vertices;
+    json["components"] = check.components;
+    json["dropped_components"] = stats.droppedComponents;
+    json["volume"] = check.volume;
+    json["area"] = check.area;
+    json["watertight"] = check.watertight();
+    json["boundary_edges"] = check.boundaryEdges;
+    json["non_manifold_edges"] = check.nonManifoldEdges;
+    json["misoriented_edges"] = check.misorientedEdges;
+    json["non_manifold_vertices"] = check.nonManifoldVertices;
+    json["degenerate_triangles"] = check.degenerateTriangles;
+    json["lattice_blocks"] = stats.latticeBlocks;
+    json["near_blocks"] = stats.nearBlocks;
+    json["blocks"] = stats.blocks;
+    json["closure_blocks"] = stats.closureBlocks;
+    json["estimates"] = stats.estimates;
+    json["threads"] = stats.threads;
+    json["mesh_seconds"] = stats.seconds;
+    json["seconds"] = seconds;
+    std::printf("%s\n", jsonText(json).c_str());
 }
 
 }  // namespace

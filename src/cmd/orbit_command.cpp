@@ -1,7 +1,6 @@
 #include "cmd/orbit_command.h"
 
 #include <cstdio>
-#include <sstream>
 
 #include "cmd/dynamics_input.h"
 #include "quaternia/dynamics/connectedness.h"
@@ -76,69 +75,63 @@ void printText(const OrbitCommandOptions& options, const Quaternion& c, const Qu
     if (k) std::printf("K: %s\n", connectednessText(*k).c_str());
 }
 
-std::string jsonCycle(const CycleAnalysis& cycle) {
-    std::ostringstream json;
-    json << "{\"period\": " << cycle.period() << ", \"points\": [";
-    for (std::size_t i = 0; i < cycle.points.size(); ++i)
-        json << (i ? ", " : "") << jsonQuaternion(cycle.points[i]);
-    json << "], \"multiplier\": "
-         << (cycle.multiplier ? jsonComplex(*cycle.multiplier) : std::string("null"))
-         << ", \"plane_axis\": "
-         << (cycle.multiplier ? jsonQuaternion(cycle.axis) : std::string("null")) << ", \"class\": "
-         << (cycle.multiplier ? jsonString(toString(cycle.complexClass.stability)) : "null")
-         << ", \"class_in_h\": " << jsonString(toString(cycle.classInH.stability))
-         << ", \"eigenvalues\": [";
-    for (std::size_t i = 0; i < cycle.eigenvalues.size(); ++i)
-        json << (i ? ", " : "") << jsonComplex(cycle.eigenvalues[i]);
-    json << "], \"jacobian\": [";
-    for (int r = 0; r < 4; ++r) {
-        json << (r ? ", [" : "[");
-        for (int c = 0; c < 4; ++c)
-            json << (c ? ", " : "") << jsonNumber(cycle.jacobian[r][c]);
-        json << "]";
-    }
-    json << "], \"residual\": " << jsonNumber(cycle.residual)
-         << ", \"refined\": " << (cycle.refined ? "true" : "false") << "}";
-    return json.str();
+Json jsonCycle(const CycleAnalysis& cycle) {
+    Json json;
+    json["period"] = cycle.period();
+    json["points"] = cycle.points;
+    json["multiplier"] = cycle.multiplier ? Json(*cycle.multiplier) : Json();
+    json["plane_axis"] = cycle.multiplier ? Json(cycle.axis) : Json();
+    json["class"] = cycle.multiplier ? Json(toString(cycle.complexClass.stability)) : Json();
+    json["class_in_h"] = toString(cycle.classInH.stability);
+    json["eigenvalues"] = cycle.eigenvalues;
+    json["jacobian"] = cycle.jacobian;
+    json["residual"] = cycle.residual;
+    json["refined"] = cycle.refined;
+    return json;
 }
 
-std::string jsonOrbit(const OrbitResult& r) {
-    std::ostringstream json;
-    json << "\"fate\": " << jsonString(toString(r.fate)) << ", \"escape_iteration\": "
-         << (r.fate == OrbitFate::Escapes ? std::to_string(r.escapeIteration) : "null")
-         << ", \"preperiod\": " << r.preperiod
-         << ", \"period\": " << (r.cycle ? std::to_string(r.cycle->period()) : "null")
-         << ", \"class\": " << (r.cycle ? jsonString(toString(r.governingClass.stability)) : "null")
-         << ", \"unsure\": " << (r.unsure ? "true" : "false")
-         << ", \"note\": " << jsonString(r.note);
-    return json.str();
+// The fields an orbit's report shares with each critical orbit's, added to `json`.
+void addOrbit(Json& json, const OrbitResult& r) {
+    json["fate"] = toString(r.fate);
+    json["escape_iteration"] = r.fate == OrbitFate::Escapes ? Json(r.escapeIteration) : Json();
+    json["preperiod"] = r.preperiod;
+    json["period"] = r.cycle ? Json(r.cycle->period()) : Json();
+    json["class"] = r.cycle ? Json(toString(r.governingClass.stability)) : Json();
+    json["unsure"] = r.unsure;
+    json["note"] = r.note;
+}
+
+Json jsonConnectedness(const Connectedness& k) {
+    Json json;
+    json["connected"] = k.connected;
+    json["cantor"] = k.cantor;
+    json["certain"] = k.certain;
+    json["critical_orbits"] = Json::array();
+    for (const CriticalOrbit& critical : k.criticalOrbits) {
+        Json orbit;
+        orbit["point"] = critical.point;
+        orbit["multiplicity"] = critical.multiplicity;
+        addOrbit(orbit, critical.orbit);
+        json["critical_orbits"].push_back(std::move(orbit));
+    }
+    return json;
 }
 
 void printJson(const OrbitCommandOptions& options, const Quaternion& c, const Quaternion& z0,
                const OrbitResult& r, const std::optional<Connectedness>& k) {
-    std::ostringstream json;
-    json << "{\"command\": \"orbit\", \"formula\": " << jsonString(options.formula)
-         << ", \"c\": " << jsonQuaternion(c) << ", \"z0\": " << jsonQuaternion(z0)
-         << ", \"max_iterations\": " << options.maxIterations << ", " << jsonOrbit(r)
-         << ", \"cycle\": " << (r.cycle ? jsonCycle(*r.cycle) : "null")
-         << ", \"escape_radius\": " << jsonNumber(r.escapeRadius)
-         << ", \"tolerance\": " << jsonNumber(r.tolerance) << ", \"iterations\": " << r.iterations
-         << ", \"connectedness\": ";
-    if (k) {
-        json << "{\"connected\": " << (k->connected ? "true" : "false")
-             << ", \"cantor\": " << (k->cantor ? "true" : "false")
-             << ", \"certain\": " << (k->certain ? "true" : "false") << ", \"critical_orbits\": [";
-        for (std::size_t i = 0; i < k->criticalOrbits.size(); ++i) {
-            const CriticalOrbit& critical = k->criticalOrbits[i];
-            json << (i ? ", " : "") << "{\"point\": " << jsonComplex(critical.point)
-                 << ", \"multiplicity\": " << critical.multiplicity << ", "
-                 << jsonOrbit(critical.orbit) << "}";
-        }
-        json << "]}";
-    } else {
-        json << "null";
-    }
-    std::printf("%s}\n", json.str().c_str());
+    Json json;
+    json["command"] = "orbit";
+    json["formula"] = options.formula;
+    json["c"] = c;
+    json["z0"] = z0;
+    json["max_iterations"] = options.maxIterations;
+    addOrbit(json, r);
+    json["cycle"] = r.cycle ? jsonCycle(*r.cycle) : Json();
+    json["escape_radius"] = r.escapeRadius;
+    json["tolerance"] = r.tolerance;
+    json["iterations"] = r.iterations;
+    json["connectedness"] = k ? jsonConnectedness(*k) : Json();
+    std::printf("%s\n", jsonText(json).c_str());
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
 #include "cmd/plane_command.h"
 
 #include <cstdio>
-#include <sstream>
 
 #include "quaternia/dynamics/connectedness.h"
 #include "quaternia/image/png_io.h"
 #include "quaternia/plane/plane_render.h"
+#include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/util/atomic_file.h"
 
@@ -41,17 +41,19 @@ void printSummary(const PlaneCommandOptions& options, const Scene& scene, const 
         if (!note.empty()) std::printf("note: %s\n", note.c_str());
         return;
     }
-    std::ostringstream json;
-    json.precision(6);
-    json << "{\"command\": \"plane\", \"kind\": " << jsonString(kind)
-         << ", \"output\": " << jsonString(options.output) << ", \"width\": " << scene.render.width
-         << ", \"height\": " << scene.render.height << ", \"samples\": " << scene.render.samples
-         << ", \"formula\": " << jsonString(scene.fractal.formula) << ", \"c\": ["
-         << scene.fractal.c.w << ", " << scene.fractal.c.x << ", " << scene.fractal.c.y << ", "
-         << scene.fractal.c.z << "], \"threads\": " << image.threads
-         << ", \"seconds\": " << image.seconds
-         << ", \"note\": " << (note.empty() ? "null" : jsonString(note)) << "}";
-    std::printf("%s\n", json.str().c_str());
+    Json json;
+    json["command"] = "plane";
+    json["kind"] = kind;
+    json["output"] = options.output;
+    json["width"] = scene.render.width;
+    json["height"] = scene.render.height;
+    json["samples"] = scene.render.samples;
+    json["formula"] = scene.fractal.formula;
+    json["c"] = scene.fractal.c;
+    json["threads"] = image.threads;
+    json["seconds"] = image.seconds;
+    json["note"] = note.empty() ? Json() : Json(note);
+    std::printf("%s\n", jsonText(json).c_str());
 }
 
 }  // namespace

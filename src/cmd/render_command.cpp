@@ -1,11 +1,11 @@
 #include "cmd/render_command.h"
 
 #include <cstdio>
-#include <sstream>
 
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/image/png_io.h"
 #include "quaternia/render/render.h"
+#include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/util/atomic_file.h"
 #include "quaternia/util/error.h"
@@ -25,23 +25,27 @@ void printSummary(const RenderCommandOptions& options, const Scene& scene,
             stats.threads == 1 ? "" : "s");
         return;
     }
-    std::ostringstream json;
-    json.precision(6);
-    json << "{\"command\": \"render\", \"output\": " << jsonString(options.output)
-         << ", \"depth_output\": "
-         << (options.depthOutput.empty() ? "null" : jsonString(options.depthOutput))
-         << ", \"width\": " << scene.render.width << ", \"height\": " << scene.render.height
-         << ", \"samples\": " << scene.render.samples
-         << ", \"formula\": " << jsonString(scene.fractal.formula) << ", \"c\": ["
-         << scene.fractal.c.w << ", " << scene.fractal.c.x << ", " << scene.fractal.c.y << ", "
-         << scene.fractal.c.z << "], \"threads\": " << stats.threads
-         << ", \"seconds\": " << stats.seconds << ", \"rays\": " << stats.rays
-         << ", \"rays_per_second\": " << raysPerSecond << ", \"hits\": " << stats.hits
-         << ", \"march_steps\": " << stats.marchSteps << ", \"iterations\": " << stats.iterations
-         << ", \"shading_estimates\": " << stats.shadingEstimates << ", \"lane_utilisation\": "
-         << (stats.laneSlots > 0 ? double(stats.laneIterations) / double(stats.laneSlots) : 0.0)
-         << ", \"engine\": " << jsonString(stats.engine) << "}";
-    std::printf("%s\n", json.str().c_str());
+    Json json;
+    json["command"] = "render";
+    json["output"] = options.output;
+    json["depth_output"] = options.depthOutput.empty() ? Json() : Json(options.depthOutput);
+    json["width"] = scene.render.width;
+    json["height"] = scene.render.height;
+    json["samples"] = scene.render.samples;
+    json["formula"] = scene.fractal.formula;
+    json["c"] = scene.fractal.c;
+    json["threads"] = stats.threads;
+    json["seconds"] = stats.seconds;
+    json["rays"] = stats.rays;
+    json["rays_per_second"] = raysPerSecond;
+    json["hits"] = stats.hits;
+    json["march_steps"] = stats.marchSteps;
+    json["iterations"] = stats.iterations;
+    json["shading_estimates"] = stats.shadingEstimates;
+    json["lane_utilisation"] =
+        stats.laneSlots > 0 ? double(stats.laneIterations) / double(stats.laneSlots) : 0.0;
+    json["engine"] = stats.engine;
+    std::printf("%s\n", jsonText(json).c_str());
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // What the commands that read a scene share: the options [SCENE.toml] -o --width --height --set
-// --threads --json, building the scene from them, Ctrl-C handling, and JSON strings.
+// --threads --json, building the scene from them, and Ctrl-C handling.
 #pragma once
 
 #include <atomic>
@@ -12,7 +12,6 @@
 #include <CLI/CLI.hpp>
 
 #include "cmd/progress_bar.h"
-#include "quaternia/scene/json.h"  // jsonString for the commands' summaries
 #include "quaternia/scene/scene.h"
 #include "quaternia/util/parallel.h"
 

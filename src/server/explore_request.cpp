@@ -18,21 +18,6 @@ void checkAtMost(const std::string& key, int64_t value, int64_t limit, const std
     }
 }
 
-// A ParameterValue as JSON: numbers, booleans, strings, arrays of numbers.
-std::string jsonValue(const ParameterValue& value) {
-    if (auto* real = std::get_if<double>(&value)) return jsonNumber(*real);
-    if (auto* integer = std::get_if<int64_t>(&value)) return std::to_string(*integer);
-    if (auto* boolean = std::get_if<bool>(&value)) return *boolean ? "true" : "false";
-    if (auto* text = std::get_if<std::string>(&value)) return jsonString(*text);
-    std::string out = "[";
-    for (double v : std::get<std::vector<double>>(value)) {
-        if (out.size() > 1) out += ", ";
-        out += jsonNumber(v);
-    }
-    out += ']';
-    return out;
-}
-
 const char* typeName(ParameterType type) {
     switch (type) {
         case ParameterType::Real:
@@ -140,28 +125,34 @@ std::string renderCommandForScene(const Scene& scene) {
 }
 
 std::string parameterTableJson(const Scene& base) {
-    std::string out = "[";
+    // A ParameterValue (a number, boolean, string or array of numbers) as its JSON value.
+    auto value = [](const ParameterValue& v) {
+        return std::visit([](const auto& x) { return Json(x); }, v);
+    };
+    Json table = Json::array();
     for (const Parameter& p : parameterTable()) {
-        if (out.size() > 1) out += ",\n";
-        out += "{\"name\": " + jsonString(p.name()) + ", \"section\": " + jsonString(p.section) +
-               ", \"key\": " + jsonString(p.key) + ", \"type\": \"" + typeName(p.type) +
-               "\", \"default\": " + jsonValue(p.defaultValue) +
-               ", \"value\": " + jsonValue(p.read(base)) +
-               ", \"minimum\": " + jsonNumber(p.minimum) +
-               ", \"maximum\": " + jsonNumber(p.maximum) + ", \"choices\": [";
-        for (std::size_t i = 0; i < p.choices.size(); ++i)
-            out += (i ? ", " : "") + jsonString(p.choices[i]);
-        out += "], \"allowed\": [";
-        for (std::size_t i = 0; i < p.allowedIntegers.size(); ++i)
-            out += (i ? ", " : "") + std::to_string(p.allowedIntegers[i]);
-        out += "], \"help\": " + jsonString(p.help) + "}";
+        Json entry;
+        entry["name"] = p.name();
+        entry["section"] = p.section;
+        entry["key"] = p.key;
+        entry["type"] = typeName(p.type);
+        entry["default"] = value(p.defaultValue);
+        entry["value"] = value(p.read(base));
+        entry["minimum"] = p.minimum;
+        entry["maximum"] = p.maximum;
+        entry["choices"] = p.choices;
+        entry["allowed"] = p.allowedIntegers;
+        entry["help"] = p.help;
+        table.push_back(std::move(entry));
     }
-    out += "]\n";
-    return out;
+    return jsonText(table) + "\n";
 }
 
 std::string errorJson(const std::string& key, const std::string& message) {
-    return "{\"error\": " + jsonString(message) + ", \"key\": " + jsonString(key) + "}\n";
+    Json json;
+    json["error"] = message;
+    json["key"] = key;
+    return jsonText(json) + "\n";
 }
 
 }  // namespace quaternia

@@ -2,11 +2,14 @@
 // views render, every bad parameter is a 400 naming the key, nothing outside the embedded page
 // is reachable, image sizes and request rates are bounded, and a client's new request cancels
 // its stale render.
+#include <algorithm>
 #include <atomic>
 #include <thread>
 
 #include "quaternia/image/png_io.h"
 #include "quaternia/render/render.h"
+#include "quaternia/scene/json.h"
+#include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_file.h"
 #include "server/explore_request.h"
 #include "server/explore_test_client.h"
@@ -21,8 +24,9 @@ void expectBadKey(const httplib::Result& result, const std::string& key) {
     ASSERT_TRUE(result) << "no answer";
     EXPECT_EQ(result->status, 400) << result->body;
     EXPECT_EQ(result->get_header_value("Content-Type"), "application/json");
-    EXPECT_NE(result->body.find("\"key\": \"" + key + "\""), std::string::npos) << result->body;
-    EXPECT_NE(result->body.find("\"error\": "), std::string::npos) << result->body;
+    Json body = Json::parse(result->body);
+    EXPECT_EQ(body["key"], key) << result->body;
+    EXPECT_TRUE(body["error"].is_string()) << result->body;
 }
 
 TEST_F(ExploreApi, ServesThePageAndTheParameterTable) {
@@ -36,8 +40,14 @@ TEST_F(ExploreApi, ServesThePageAndTheParameterTable) {
     EXPECT_NE(get("/")->body.find("explore.js"), std::string::npos);
     auto table = get("/api/parameters");
     ASSERT_EQ(table->status, 200);
-    EXPECT_NE(table->body.find("\"name\": \"fractal.c\""), std::string::npos);
-    EXPECT_NE(table->body.find("\"help\": "), std::string::npos);
+    Json parameters = Json::parse(table->body);
+    ASSERT_EQ(parameters.size(), parameterTable().size());
+    auto c = std::find_if(parameters.begin(), parameters.end(),
+                          [](const Json& p) { return p["name"] == "fractal.c"; });
+    ASSERT_NE(c, parameters.end());
+    EXPECT_EQ((*c)["type"], "vector4");
+    EXPECT_EQ((*c)["value"], Json(defaultScene().fractal.c)) << *c;
+    EXPECT_TRUE((*c)["help"].is_string());
 }
 
 TEST_F(ExploreApi, RendersTheSamePngAsTheLibrary) {

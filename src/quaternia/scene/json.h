@@ -1,59 +1,41 @@
-// Hand-written JSON output of the commands: string escaping and numbers that read back exactly.
+// JSON for the commands' summaries and the explorer's answers: nlohmann::ordered_json (keys in
+// the order written), whose dump() writes each double in the shortest form that reads back
+// exactly and NaN and infinities as null, which JSON lacks. Quaternions convert to [w, x, y, z]
+// and complex numbers to [re, im].
 #pragma once
 
-#include <cmath>
 #include <complex>
-#include <cstdio>
-#include <initializer_list>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "quaternia/algebra/quaternion.h"
 
 namespace quaternia {
 
-inline std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (char ch : s) {
-        if (ch == '"' || ch == '\\') {
-            out += '\\';
-            out += ch;
-        } else if (static_cast<unsigned char>(ch) < 0x20) {
-            char buffer[8];
-            std::snprintf(buffer, sizeof buffer, "\\u%04x", ch);
-            out += buffer;
-        } else {
-            out += ch;
-        }
-    }
-    out += '"';  // appended in place: `out + "\""` trips GCC 12's -Wrestrict false positive
-    return out;
+using Json = nlohmann::ordered_json;
+
+// One line of JSON. Strings come from users (paths, formulas, query keys) and need not be UTF-8:
+// invalid bytes become U+FFFD instead of dump()'s exception.
+inline std::string jsonText(const Json& json) {
+    return json.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
-// 17 significant digits (round-trips a double); null for NaN and infinities, which JSON lacks.
-inline std::string jsonNumber(double value) {
-    if (!std::isfinite(value)) return "null";
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", value);
-    return buffer;
-}
-
-// Built by appending: `"[" + std::string` trips GCC 12's -Wrestrict false positive.
-inline std::string jsonArray(std::initializer_list<double> values) {
-    std::string out = "[";
-    for (double v : values) {
-        if (out.size() > 1) out += ", ";
-        out += jsonNumber(v);
-    }
-    out += ']';
-    return out;
-}
-
-inline std::string jsonComplex(std::complex<double> z) {
-    return jsonArray({z.real(), z.imag()});
-}
-
-inline std::string jsonQuaternion(const Quaternion& q) {
-    return jsonArray({q.w, q.x, q.y, q.z});
+// Found by argument-dependent lookup when a Quaternion is assigned to a Json.
+template <typename BasicJson>
+void to_json(BasicJson& json, const Quaternion& q) {
+    json = BasicJson::array({q.w, q.x, q.y, q.z});
 }
 
 }  // namespace quaternia
+
+// std::complex lives in std, where a to_json of ours may not go: nlohmann's serializer hook.
+NLOHMANN_JSON_NAMESPACE_BEGIN
+template <typename T>
+struct adl_serializer<std::complex<T>> {
+    template <typename BasicJson>
+    static void to_json(BasicJson& out, const std::complex<T>& z) {
+        out = BasicJson::array({z.real(), z.imag()});
+    }
+};
+NLOHMANN_JSON_NAMESPACE_END
