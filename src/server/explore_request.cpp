@@ -5,6 +5,7 @@
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
 #include "quaternia/util/error.h"
 
@@ -155,6 +156,23 @@ std::string parameterTableJson(const Scene& base) {
         for (std::size_t i = 0; i < p.allowedIntegers.size(); ++i)
             out += (i ? ", " : "") + std::to_string(p.allowedIntegers[i]);
         out += "], \"help\": " + jsonString(p.help) + "}";
+    }
+    out += "]\n";
+    return out;
+}
+
+std::string presetsJson() {
+    std::string out = "[";
+    for (const Preset& preset : scenePresets()) {
+        if (out.size() > 1) out += ",\n";
+        out += "{\"name\": " + jsonString(preset.name) +
+               ", \"description\": " + jsonString(preset.description) + ", \"values\": {";
+        for (std::size_t i = 0; i < preset.values.size(); ++i) {
+            const auto& [key, value] = preset.values[i];
+            out += (i ? ", " : "") + jsonString(key) + ": " +
+                   jsonValue(checkedValue(*findParameter(key), value));
+        }
+        out += "}}";
     }
     out += "]\n";
     return out;

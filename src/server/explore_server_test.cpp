@@ -7,6 +7,7 @@
 
 #include "quaternia/image/png_io.h"
 #include "quaternia/render/render.h"
+#include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
 #include "server/explore_request.h"
 #include "server/explore_test_client.h"
@@ -38,6 +39,26 @@ TEST_F(ExploreApi, ServesThePageAndTheParameterTable) {
     ASSERT_EQ(table->status, 200);
     EXPECT_NE(table->body.find("\"name\": \"fractal.c\""), std::string::npos);
     EXPECT_NE(table->body.find("\"help\": "), std::string::npos);
+}
+
+TEST_F(ExploreApi, ServesThePresetsOfTheLibrary) {
+    startServer(options());
+    auto r = get("/api/presets");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    EXPECT_EQ(r->get_header_value("Content-Type"), "application/json");
+    EXPECT_EQ(r->body, presetsJson());
+    // Each preset in order, with its description and the values the table holds for it.
+    std::size_t at = 0;
+    for (const Preset& preset : scenePresets()) {
+        at = r->body.find("{\"name\": \"" + preset.name + "\"", at);
+        ASSERT_NE(at, std::string::npos) << preset.name;
+        EXPECT_NE(r->body.find(preset.description, at), std::string::npos) << preset.name;
+    }
+    EXPECT_NE(r->body.find("\"values\": {\"fractal.formula\": \"z^2 + c\", \"fractal.c\": "
+                           "[-0.122561"),
+              std::string::npos)
+        << r->body;
 }
 
 TEST_F(ExploreApi, RendersTheSamePngAsTheLibrary) {
