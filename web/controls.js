@@ -5,8 +5,8 @@
 // still takes anything the table allows.
 
 // Sections and keys the page sets itself (image size, output format) or that belong to other
-// commands (plane images, meshes).
-const HIDDEN_SECTIONS = new Set(['plane', 'mesh']);
+// commands (plane images, meshes, orbits and cycles).
+const HIDDEN_SECTIONS = new Set(['plane', 'mesh', 'orbit', 'cycles']);
 const HIDDEN_KEYS = new Set(['render.width', 'render.height', 'render.bit_depth', 'camera.up']);
 
 const SLIDER_RANGES = {

@@ -242,23 +242,20 @@ map.addEventListener('click', (e) => {
 
 // ---- Presets and exports ----------------------------------------------------------------------
 
-const PRESETS = [
-  ['Start', null],
-  ['Rabbit', { 'fractal.formula': 'z^2 + c', 'fractal.c': [-0.122561, 0.744862, 0, 0] }],
-  ['Dendrite', { 'fractal.formula': 'z^2 + c', 'fractal.c': [0, 1, 0, 0] }],
-  ['Basilica', { 'fractal.formula': 'z^2 + c', 'fractal.c': [-1, 0, 0, 0] }],
-  ['4D blob', { 'fractal.formula': 'z^2 + c', 'fractal.c': [-0.2, 0.4, -0.4, -0.4] }],
-  ['Cubic', { 'fractal.formula': 'z^3 + c', 'fractal.c': [-0.5, 0.5, 0, 0] }],
-  ['Two-sided', { 'fractal.formula': '(1+2i) z (0.5-k) z + c', 'fractal.c': [-0.2, 0.6, 0.2, 0.2] }],
-];
-
-function buildPresets() {
+// The presets come from the server (GET /api/presets, the library's list that --preset reads);
+// Start goes back to the starting scene's values of every key a preset sets.
+function buildPresets(presets) {
   const container = document.getElementById('presets');
-  for (const [label, values] of PRESETS) {
-    const button = Object.assign(document.createElement('button'), { type: 'button', textContent: label });
+  const keys = new Set(presets.flatMap((preset) => Object.keys(preset.values)));
+  const startValues = Object.fromEntries([...keys].map((name) => [name, start[name]]));
+  const buttons = [{ name: 'Start', description: 'The scene the explorer started with',
+                     values: startValues }, ...presets];
+  for (const { name, description, values } of buttons) {
+    const button = Object.assign(document.createElement('button'),
+      { type: 'button', textContent: name, title: description });
+    button.dataset.preset = name;
     button.addEventListener('click', () => {
-      const preset = values || { 'fractal.formula': start['fractal.formula'], 'fractal.c': start['fractal.c'] };
-      Object.assign(state, structuredClone(preset));
+      Object.assign(state, structuredClone(values));
       changed('fractal.formula');
     });
     container.append(button);
@@ -307,13 +304,14 @@ async function main() {
   // alongside the table.
   lastChange = performance.now();
   requestLevel(0);
+  const presets = fetch('/api/presets').then((response) => response.json());
   table = await (await fetch('/api/parameters')).json();
   for (const parameter of table) {
     start[parameter.name] = parameter.value;
     state[parameter.name] = structuredClone(parameter.value);
   }
   refreshControls = buildControls(controls, table, state, changed);
-  buildPresets();
+  buildPresets(await presets);
   drawMap();  // c, before the map's image arrives
   if (!inflight && view.dataset.level !== undefined) requestLevel(+view.dataset.level + 1);
 }

@@ -13,24 +13,25 @@
 namespace quaternia {
 namespace {
 
-ComplexRestriction complexMap(const CyclesCommandOptions& options, const Quaternion& c) {
-    Polynomial p = compileMap(options.formula, c);
+ComplexRestriction complexMap(const Scene& scene, const std::string& formula) {
+    Polynomial p = compileMap(scene.fractal.formula, scene.fractal.c, formula);
     std::optional<ComplexRestriction> restriction = restrictToComplexPlane(p);
     if (!restriction) {
-        throw UserError("--formula",
-                        "--formula: cycles needs a complex polynomial, but the coefficients of " +
+        throw UserError(formula,
+                        formula + ": cycles needs a complex polynomial, but the coefficients of " +
                             p.toString() + " do not lie in one plane C_u = span{1, u}");
     }
     return *restriction;
 }
 
-void checkPeriod(int period, int degree) {
+// The table bounds the period for degree 2; higher degrees allow less. `name` is --period or
+// cycles.period, whichever set it.
+void checkPeriod(int period, int degree, const std::string& name) {
     if (period < 1 ||
         period * std::log(double(degree)) > std::log(double(kMaxPeriodicPoints)) + 1e-9) {
-        throw UserError("--period", "--period must be at least 1 with degree^period <= " +
-                                        std::to_string(kMaxPeriodicPoints) + " (degree " +
-                                        std::to_string(degree) + "), got " +
-                                        std::to_string(period));
+        throw UserError(name, name + " must be at least 1 with degree^period <= " +
+                                  std::to_string(kMaxPeriodicPoints) + " (degree " +
+                                  std::to_string(degree) + "), got " + std::to_string(period));
     }
 }
 
@@ -47,10 +48,9 @@ std::string cycleNote(const PeriodicCycle& cycle) {
     return text.empty() ? text : text + ")";
 }
 
-void printTable(const CyclesCommandOptions& options, const Quaternion& c,
-                const ComplexRestriction& map, const PeriodicPoints& points) {
+void printTable(const Scene& scene, const ComplexRestriction& map, const PeriodicPoints& points) {
     std::printf("%s with c = %s: %lld point%s of period %d in %zu cycle%s\n",
-                options.formula.c_str(), formatQuaternion(c).c_str(),
+                scene.fractal.formula.c_str(), formatQuaternion(scene.fractal.c).c_str(),
                 static_cast<long long>(points.count), points.count == 1 ? "" : "s", points.period,
                 points.cycles.size(), points.cycles.size() == 1 ? "" : "s");
     if (norm(map.axis - kUnitI) > 1e-12) {
@@ -72,12 +72,11 @@ void printTable(const CyclesCommandOptions& options, const Quaternion& c,
     }
 }
 
-void printJson(const CyclesCommandOptions& options, const Quaternion& c,
-               const ComplexRestriction& map, const PeriodicPoints& points) {
+void printJson(const Scene& scene, const ComplexRestriction& map, const PeriodicPoints& points) {
     Json json;
     json["command"] = "cycles";
-    json["formula"] = options.formula;
-    json["c"] = c;
+    json["formula"] = scene.fractal.formula;
+    json["c"] = scene.fractal.c;
     json["plane_axis"] = map.axis;
     json["period"] = points.period;
     json["points"] = points.count;
@@ -102,30 +101,32 @@ void printJson(const CyclesCommandOptions& options, const Quaternion& c,
 
 void addCyclesCommand(CLI::App& app, CyclesCommandOptions& options) {
     CLI::App* cycles = app.add_subcommand(
-        "cycles", "All periodic points of one period of a complex polynomial, as cycles");
-    cycles
-        ->add_option("--formula", options.formula,
-                     "The map, a polynomial in z and c whose coefficients share a plane C_u")
-        ->capture_default_str();
-    cycles->add_option("--c", options.c, "The parameter c: a+bi (or a quaternion in one plane)")
-        ->capture_default_str();
-    cycles
-        ->add_option("--period", options.period,
-                     "The period n (degree^n <= " + std::to_string(kMaxPeriodicPoints) + ")")
-        ->capture_default_str();
+        "cycles",
+        "All periodic points of one period (cycles.period) of the scene's map, a complex "
+        "polynomial, as cycles");
+    addSceneInputOptions(*cycles, options);
+    addMapFlags(*cycles, options.map,
+                "The map, a polynomial in z and c whose coefficients share a plane C_u",
+                "The parameter c: a+bi (or a quaternion in one plane)");
+    cycles->add_option("--period", options.period,
+                       "The period n, degree^n <= " + std::to_string(kMaxPeriodicPoints) +
+                           " (sets cycles.period; default 1)");
     cycles->add_flag("--json", options.json, "Print JSON instead of a table");
+    cycles->footer(sceneHelpFooter());
 }
 
 int runCyclesCommand(const CyclesCommandOptions& options) {
-    if (options.period < 1) checkPeriod(options.period, 2);
-    Quaternion c = parseConstant(options.c, "--c");
-    ComplexRestriction map = complexMap(options, c);
-    checkPeriod(options.period, map.polynomial.degree());
-    PeriodicPoints points = periodicPoints(map.polynomial, options.period);
+    Scene scene = sceneFromOptions(options);
+    applyMapFlags(scene, options.map);
+    if (options.period) setFromFlag(scene, "--period", "cycles.period", *options.period);
+    ComplexRestriction map = complexMap(scene, formulaName(options.map));
+    checkPeriod(scene.cycles.period, map.polynomial.degree(),
+                options.period ? "--period" : "cycles.period");
+    PeriodicPoints points = periodicPoints(map.polynomial, scene.cycles.period);
     if (options.json) {
-        printJson(options, c, map, points);
+        printJson(scene, map, points);
     } else {
-        printTable(options, c, map, points);
+        printTable(scene, map, points);
     }
     return 0;
 }

@@ -2,17 +2,21 @@
 // into cycles, with multipliers and classes, as a table or JSON.
 #pragma once
 
-#include <string>
+#include <cstdint>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
+#include "cmd/dynamics_input.h"
+#include "cmd/scene_command.h"
+
 namespace quaternia {
 
-struct CyclesCommandOptions {
-    std::string formula = "z^2 + c";
-    std::string c = "0";
-    int period = 1;
-    bool json = false;
+// The scene ([SCENE.toml], --preset, --set) gives the map (fractal.formula, fractal.c) and
+// cycles.period; the short flags override single keys after --set.
+struct CyclesCommandOptions : SceneCommandOptions {
+    MapFlags map;
+    std::optional<int64_t> period;  // cycles.period
 };
 
 void addCyclesCommand(CLI::App& app, CyclesCommandOptions& options);

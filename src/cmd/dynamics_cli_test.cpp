@@ -6,6 +6,7 @@
 namespace quaternia {
 namespace {
 
+namespace fs = std::filesystem;
 using testing::CommandResult;
 
 class DynamicsCli : public testing::CliFixture {
@@ -83,6 +84,55 @@ TEST_F(DynamicsCli, CyclesOfIAndInPlaneOfJ) {
     expectHas(j, "-i -> -1+i");
 }
 
+TEST_F(DynamicsCli, WithoutFlagsTheMapIsTheDefaultScenes) {
+    // fractal.c's default, -0.2+0.6i+0.2j+0.2k, not 0: the commands read the scene.
+    expectHas(ok("orbit"), "orbit of z0 = 0 under z^2 + c, c = -0.2+0.6i+0.2j+0.2k\n");
+    EXPECT_EQ(Json::parse(ok("orbit --json"))["max_iterations"], 1000);
+    expectHas(ok("cycles"), "z^2 + c with c = -0.2+0.6i+0.2j+0.2k: 2 points of period 1");
+}
+
+TEST_F(DynamicsCli, SceneFileAndSetDriveOrbitAndCycles) {
+    fs::path scene = write("basilica.toml",
+                           "[fractal]\nc = [-1, 0, 0, 0]\n[orbit]\nz0 = [0.5, 0, 0, 0]\n"
+                           "max_iterations = 500\n[cycles]\nperiod = 2\n");
+    Json orbit = Json::parse(ok("orbit " + scene.string() + " --json"));
+    EXPECT_EQ(orbit["c"], Json::parse("[-1, 0, 0, 0]")) << orbit;
+    EXPECT_EQ(orbit["z0"], Json::parse("[0.5, 0, 0, 0]")) << orbit;
+    EXPECT_EQ(orbit["max_iterations"], 500) << orbit;
+    EXPECT_EQ(orbit["fate"], "attracted") << orbit;
+    Json cycles = Json::parse(ok("cycles " + scene.string() + " --json"));
+    EXPECT_EQ(cycles["cycles"][0]["period"], 2) << cycles;
+    EXPECT_EQ(cycles["cycles"][0]["points"], Json::parse("[[0, 0], [-1, 0]]")) << cycles;
+    // --set: the same as the file, and the same as --c.
+    std::string set = "--set 'fractal.c=[-1, 0, 0, 0]' ";
+    EXPECT_EQ(ok("orbit " + set), ok("orbit --c -1"));
+    expectHas(ok("orbit " + set), "fate: periodic with period 2");
+    EXPECT_EQ(ok("cycles " + set + "--set cycles.period=2"), ok("cycles --c -1 --period 2"));
+    EXPECT_EQ(ok("orbit --set 'orbit.z0=[0, 1, 0, 0]' --set orbit.max_iterations=50 --c -1"),
+              ok("orbit --z0 i --max-iterations 50 --c -1"));
+}
+
+TEST_F(DynamicsCli, PresetsAndPrecedence) {
+    EXPECT_EQ(ok("orbit --preset basilica"), ok("orbit --c -1 --formula 'z^2 + c'"));
+    EXPECT_EQ(ok("cycles --preset dendrite --period 2"), ok("cycles --c i --period 2"));
+    // The scene file, then the preset, then --set, then the short flags.
+    fs::path scene = write("cubic.toml", "[fractal]\nformula = \"z^3 + c\"\nc = [1, 0, 0, 0]\n");
+    auto formulaAndC = [&](const std::string& arguments) {
+        Json json = Json::parse(ok(arguments));
+        return std::make_pair(json["formula"].get<std::string>(),
+                              json["c"].get<std::vector<double>>());
+    };
+    using FormulaAndC = std::pair<std::string, std::vector<double>>;
+    EXPECT_EQ(formulaAndC("orbit " + scene.string() + " --json"),
+              FormulaAndC("z^3 + c", {1, 0, 0, 0}));
+    EXPECT_EQ(formulaAndC("orbit " + scene.string() + " --preset basilica --json"),
+              FormulaAndC("z^2 + c", {-1, 0, 0, 0}));
+    EXPECT_EQ(formulaAndC("orbit --preset basilica --set 'fractal.c=[0.25, 0, 0, 0]' --json"),
+              FormulaAndC("z^2 + c", {0.25, 0, 0, 0}));
+    EXPECT_EQ(formulaAndC("orbit --set 'fractal.c=[0.25, 0, 0, 0]' --c 0.5 --json"),
+              FormulaAndC("z^2 + c", {0.5, 0, 0, 0}));
+}
+
 TEST_F(DynamicsCli, BadInputIsOneLineWithExitCode2) {
     expectUserError(run("orbit --c 1+*2"), "--c");
     expectUserError(run("orbit --c z"), "--c");
@@ -95,6 +145,15 @@ TEST_F(DynamicsCli, BadInputIsOneLineWithExitCode2) {
     expectUserError(run("cycles --formula 'z^3 + c' --period 7"), "--period");
     expectUserError(run("cycles --formula 'i*z*j*z + c' --c 0.1"), "complex polynomial");
     expectUserError(run("cycles --c abc"), "--c");
+    expectUserError(run("orbit --c 100"), "--c: fractal.c[0] = 100.0 is out of range");
+    // Keys set by --set or a scene file are named as keys.
+    expectUserError(run("orbit --set orbit.max_iterations=0"), "orbit.max_iterations = 0");
+    expectUserError(run("orbit --set 'fractal.formula=z + c'"), "fractal.formula");
+    expectUserError(run("cycles --set cycles.period=11"), "cycles.period = 11 is out of range");
+    expectUserError(run("cycles --set 'fractal.formula=z^3 + c' --set cycles.period=7"),
+                    "cycles.period must be at least 1 with degree^period <= 1024 (degree 3)");
+    expectUserError(run("cycles --set orbit.period=2"), "did you mean 'cycles.period'?");
+    expectUserError(run("orbit " + write("bad.toml", "[orbit]\nz0 = 1\n").string()), "orbit.z0");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cmd/scene_command.h"
 #include "quaternia/algebra/formula.h"
 #include "quaternia/util/error.h"
 
@@ -21,6 +22,28 @@ Quaternion chopped(Quaternion q) {
 
 }  // namespace
 
+void addMapFlags(CLI::App& command, MapFlags& flags, const std::string& formulaHelp,
+                 const std::string& cHelp) {
+    command.add_option(
+        "--formula", flags.formula,
+        formulaHelp + " (sets fractal.formula; default: the scene's fractal.formula)");
+    command.add_option("--c", flags.c, cHelp + " (sets fractal.c; default: the scene's fractal.c)");
+}
+
+void applyMapFlags(Scene& scene, const MapFlags& flags) {
+    if (flags.formula) setFromFlag(scene, "--formula", "fractal.formula", *flags.formula);
+    if (flags.c)
+        setFromFlag(scene, "--c", "fractal.c", quaternionValue(parseConstant(*flags.c, "--c")));
+}
+
+std::string formulaName(const MapFlags& flags) {
+    return flags.formula ? "--formula" : "fractal.formula";
+}
+
+std::vector<double> quaternionValue(const Quaternion& q) {
+    return {q.w, q.x, q.y, q.z};
+}
+
 Quaternion parseConstant(const std::string& text, const std::string& option) {
     const std::string hint = " (a constant such as -1, 0.25+0.5i or 1+2i-0.5j+k)";
     Polynomial p = compileFormula(text, Quaternion(0), option);
@@ -34,16 +57,16 @@ Quaternion parseConstant(const std::string& text, const std::string& option) {
     return value;
 }
 
-Polynomial compileMap(const std::string& formula, const Quaternion& c) {
-    Polynomial p = compileFormula(formula, c, "--formula");
+Polynomial compileMap(const std::string& formula, const Quaternion& c, const std::string& name) {
+    Polynomial p = compileFormula(formula, c, name);
     try {
         p.escapeRadius();
     } catch (const UserError& e) {
-        // The library names the scene key; here the formula came from --formula.
+        // The library names the scene key; the formula may have come from --formula.
         std::string message = e.what();
         const std::string key = "fractal.formula";
-        if (message.starts_with(key)) message = "--formula" + message.substr(key.size());
-        throw UserError("--formula", message);
+        if (message.starts_with(key)) message = name + message.substr(key.size());
+        throw UserError(name, message);
     }
     return p;
 }

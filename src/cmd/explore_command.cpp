@@ -9,11 +9,17 @@
 #include <string>
 #include <vector>
 
+#include "quaternia/scene/presets.h"
+
 namespace quaternia {
 
 void addExploreOptions(CLI::App& command, ExploreCommandOptions& options) {
     command.add_option("scene", options.scenePath,
                        "Scene file (TOML) the page starts from; without one the default scene");
+    command.add_option("--preset", options.preset,
+                       "Start from a preset, applied after the scene file: " + presetNames() +
+                           " (described below)");
+    command.footer(presetHelp());
     command.add_option("--port", options.port, "TCP port (0: any free port)")
         ->capture_default_str()
         ->check(CLI::Range(0, 65535));
@@ -40,6 +46,7 @@ int runExploreCommand(const ExploreCommandOptions& options) {
     std::vector<std::string> arguments = {
         server,       "--port",    std::to_string(options.port),   "--bind",
         options.bind, "--threads", std::to_string(options.threads)};
+    if (!options.preset.empty()) arguments.insert(arguments.end(), {"--preset", options.preset});
     // After "--", a scene path that starts with '-' is still a path.
     if (!options.scenePath.empty()) arguments.insert(arguments.end(), {"--", options.scenePath});
     std::vector<char*> argv;

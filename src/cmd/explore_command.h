@@ -1,5 +1,5 @@
-// `quaternia explore [SCENE.toml] [--port 8080] [--bind 127.0.0.1]`: serves the live explorer
-// (explore_server.h) until Ctrl-C, after printing its URL.
+// `quaternia explore [SCENE.toml] [--preset NAME] [--port 8080] [--bind 127.0.0.1]`: serves the
+// live explorer (explore_server.h) until Ctrl-C, after printing its URL.
 //
 // The server runs in its own executable, quaternia-explore, beside quaternia, into which
 // `quaternia explore` turns (execv, the same process): the HTTP library pulls in OpenSSL and
@@ -15,6 +15,7 @@ namespace quaternia {
 
 struct ExploreCommandOptions {
     std::string scenePath;  // empty: the default scene
+    std::string preset;     // empty: none; applied after the scene file (presets.h)
     std::string bind = "127.0.0.1";
     int port = 8080;
     int threads = 0;

@@ -13,6 +13,7 @@
 #include "cmd/cli_boundary.h"
 #include "cmd/explore_command.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
 #include "quaternia/util/error.h"
 #include "server/explore_server.h"
@@ -35,6 +36,7 @@ int serveExplorer(const ExploreCommandOptions& options) {
     serverOptions.renderThreads = options.threads;
     serverOptions.startScene =
         options.scenePath.empty() ? defaultScene() : loadScene(options.scenePath);
+    if (!options.preset.empty()) applyPreset(serverOptions.startScene, options.preset);
     validateScene(serverOptions.startScene);
 
     ExploreServer server(serverOptions);

@@ -90,8 +90,7 @@ void addMeshCommand(CLI::App& app, MeshCommandOptions& options) {
                      "Move the surface outward by this many cells, for printing (mesh.iso)");
     mesh->add_option("--min-component", options.minComponent,
                      "Drop pieces of smaller volume, in world units cubed (mesh.min_component)");
-    mesh->footer("Scene keys (scene file sections, or --set section.key=value):\n" +
-                 parameterHelp());
+    mesh->footer(sceneHelpFooter());
 }
 
 int runMeshCommand(const MeshCommandOptions& options) {

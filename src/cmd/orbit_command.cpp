@@ -48,10 +48,9 @@ std::string connectednessText(const Connectedness& k) {
     return text + ")" + (k.certain ? "" : ", not certain: an orbit stayed undecided");
 }
 
-void printText(const OrbitCommandOptions& options, const Quaternion& c, const Quaternion& z0,
-               const OrbitResult& r, const std::optional<Connectedness>& k) {
-    std::printf("orbit of z0 = %s under %s, c = %s\n", formatQuaternion(z0).c_str(),
-                options.formula.c_str(), formatQuaternion(c).c_str());
+void printText(const Scene& scene, const OrbitResult& r, const std::optional<Connectedness>& k) {
+    std::printf("orbit of z0 = %s under %s, c = %s\n", formatQuaternion(scene.orbit.z0).c_str(),
+                scene.fractal.formula.c_str(), formatQuaternion(scene.fractal.c).c_str());
     std::printf("fate: %s\n", fateText(r).c_str());
     if (r.cycle) {
         const CycleAnalysis& cycle = *r.cycle;
@@ -117,14 +116,13 @@ Json jsonConnectedness(const Connectedness& k) {
     return json;
 }
 
-void printJson(const OrbitCommandOptions& options, const Quaternion& c, const Quaternion& z0,
-               const OrbitResult& r, const std::optional<Connectedness>& k) {
+void printJson(const Scene& scene, const OrbitResult& r, const std::optional<Connectedness>& k) {
     Json json;
     json["command"] = "orbit";
-    json["formula"] = options.formula;
-    json["c"] = c;
-    json["z0"] = z0;
-    json["max_iterations"] = options.maxIterations;
+    json["formula"] = scene.fractal.formula;
+    json["c"] = scene.fractal.c;
+    json["z0"] = scene.orbit.z0;
+    json["max_iterations"] = scene.orbit.maxIterations;
     addOrbit(json, r);
     json["cycle"] = r.cycle ? jsonCycle(*r.cycle) : Json();
     json["escape_radius"] = r.escapeRadius;
@@ -134,43 +132,49 @@ void printJson(const OrbitCommandOptions& options, const Quaternion& c, const Qu
     std::printf("%s\n", jsonText(json).c_str());
 }
 
+Scene orbitScene(const OrbitCommandOptions& options) {
+    Scene scene = sceneFromOptions(options);
+    applyMapFlags(scene, options.map);
+    if (options.z0)
+        setFromFlag(scene, "--z0", "orbit.z0", quaternionValue(parseConstant(*options.z0, "--z0")));
+    if (options.maxIterations)
+        setFromFlag(scene, "--max-iterations", "orbit.max_iterations", *options.maxIterations);
+    return scene;
+}
+
 }  // namespace
 
 void addOrbitCommand(CLI::App& app, OrbitCommandOptions& options) {
     CLI::App* orbit = app.add_subcommand(
-        "orbit", "The fate of one orbit: escape, cycle (with multipliers and class) or undecided");
-    orbit->add_option("--formula", options.formula, "The map, a polynomial in z and c")
-        ->capture_default_str();
-    orbit->add_option("--c", options.c, "The parameter c: a+bi, or a quaternion a+bi+cj+dk")
-        ->capture_default_str();
-    orbit->add_option("--z0", options.z0, "The starting point, complex or quaternion")
-        ->capture_default_str();
-    orbit->add_option("--max-iterations", options.maxIterations, "Iterations before giving up")
-        ->capture_default_str();
+        "orbit",
+        "The fate of one orbit of the scene's map (fractal.formula with fractal.c) from orbit.z0: "
+        "escape, cycle (with multipliers and class) or undecided");
+    addSceneInputOptions(*orbit, options);
+    addMapFlags(*orbit, options.map, "The map, a polynomial in z and c",
+                "The parameter c: a+bi, or a quaternion a+bi+cj+dk");
+    orbit->add_option("--z0", options.z0,
+                      "The starting point, complex or quaternion (sets orbit.z0; default 0)");
+    orbit->add_option("--max-iterations", options.maxIterations,
+                      "Iterations before giving up (sets orbit.max_iterations; default 1000)");
     orbit->add_flag("--json", options.json, "Print a machine-readable JSON report");
+    orbit->footer(sceneHelpFooter());
 }
 
 int runOrbitCommand(const OrbitCommandOptions& options) {
-    if (options.maxIterations < 1 || options.maxIterations > kMaxOrbitIterations) {
-        throw UserError("--max-iterations", "--max-iterations must be in [1, " +
-                                                std::to_string(kMaxOrbitIterations) + "], got " +
-                                                std::to_string(options.maxIterations));
-    }
-    Quaternion c = parseConstant(options.c, "--c");
-    Quaternion z0 = parseConstant(options.z0, "--z0");
-    Polynomial p = compileMap(options.formula, c);
+    Scene scene = orbitScene(options);
+    Polynomial p = compileMap(scene.fractal.formula, scene.fractal.c, formulaName(options.map));
     OrbitOptions orbitOptions;
-    orbitOptions.maxIterations = options.maxIterations;
-    OrbitResult result = analyzeOrbit(p, z0, orbitOptions);
+    orbitOptions.maxIterations = scene.orbit.maxIterations;
+    OrbitResult result = analyzeOrbit(p, scene.orbit.z0, orbitOptions);
     // Connectedness is about the complex restriction's K (docs/facts.md, Mandelbrot set).
     std::optional<Connectedness> k;
     if (auto restriction = restrictToComplexPlane(p)) {
-        k = connectedness(restriction->polynomial, options.maxIterations);
+        k = connectedness(restriction->polynomial, scene.orbit.maxIterations);
     }
     if (options.json) {
-        printJson(options, c, z0, result, k);
+        printJson(scene, result, k);
     } else {
-        printText(options, c, z0, result, k);
+        printText(scene, result, k);
     }
     return 0;
 }

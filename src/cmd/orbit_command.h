@@ -2,21 +2,24 @@
 // attracted, undecided), its cycle's multipliers and class, and whether K is connected.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "cmd/dynamics_input.h"
+#include "cmd/scene_command.h"
+
 namespace quaternia {
 
-struct OrbitCommandOptions {
-    std::string formula = "z^2 + c";
-    std::string c = "0";
-    std::string z0 = "0";
-    int maxIterations = 1000;
-    bool json = false;
+// The scene ([SCENE.toml], --preset, --set) gives the map (fractal.formula, fractal.c) and
+// [orbit]; the short flags override single keys after --set.
+struct OrbitCommandOptions : SceneCommandOptions {
+    MapFlags map;
+    std::optional<std::string> z0;         // orbit.z0, in parseConstant's syntax
+    std::optional<int64_t> maxIterations;  // orbit.max_iterations
 };
-
-inline constexpr int kMaxOrbitIterations = 1000000;
 
 void addOrbitCommand(CLI::App& app, OrbitCommandOptions& options);
 // Prints the report; returns the exit code. Throws UserError on bad input.

@@ -64,8 +64,7 @@ void addPlaneCommand(CLI::App& app, PlaneCommandOptions& options) {
         "Draw a 2D image: a Julia set, its boundary, the Mandelbrot set, basins of "
         "attraction or a plane through a quaternion Julia set (plane.kind)");
     addSceneOptions(*plane, options, "Output PNG (RGB: plane images are opaque)");
-    plane->footer("Scene keys (scene file sections, or --set section.key=value):\n" +
-                  parameterHelp());
+    plane->footer(sceneHelpFooter());
 }
 
 int runPlaneCommand(const PlaneCommandOptions& options) {

@@ -13,6 +13,7 @@
 #include "cmd/plane_command.h"
 #include "cmd/render_command.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/presets.h"
 #include "quaternia/util/error.h"
 
 int main(int argc, char** argv) {
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
         "cycles, explore).\n\nScene "
         "keys (scene file "
         "sections, or --set section.key=value):\n" +
-        parameterHelp());
+        parameterHelp() + "\n" + presetHelp());
     RenderCommandOptions renderOptions;
     addRenderCommand(app, renderOptions);
     OrbitCommandOptions orbitOptions;

@@ -56,8 +56,7 @@ void addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
                     "Output PNG (RGBA, alpha = coverage; RGB when every pixel is opaque)");
     render->add_option("--depth", options.depthOutput,
                        "Also write a 16-bit grey depth pass to this PNG");
-    render->footer("Scene keys (scene file sections, or --set section.key=value):\n" +
-                   parameterHelp());
+    render->footer(sceneHelpFooter());
 }
 
 int runRenderCommand(const RenderCommandOptions& options) {

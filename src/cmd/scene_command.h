@@ -1,5 +1,5 @@
-// What the commands that read a scene share: the options [SCENE.toml] -o --width --height --set
-// --threads --json, building the scene from them, and Ctrl-C handling.
+// What the commands that read a scene share: the options [SCENE.toml] --preset --set -o --width
+// --height --threads --json, building the scene from them, and Ctrl-C handling.
 #pragma once
 
 #include <atomic>
@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cmd/progress_bar.h"
+#include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene.h"
 #include "quaternia/util/parallel.h"
 
@@ -19,6 +20,7 @@ namespace quaternia {
 
 struct SceneCommandOptions {
     std::string scenePath;  // empty: the embedded default scene
+    std::string preset;     // empty: none (presets.h)
     std::string output;
     std::optional<int64_t> width, height;  // unset: from the scene
     std::vector<std::string> overrides;    // section.key=value
@@ -26,14 +28,26 @@ struct SceneCommandOptions {
     bool json = false;
 };
 
-// Adds the shared options to `command`; `outputHelp` describes -o. --width and --height only
-// where the command makes an image.
+// Adds what every command that reads a scene takes: [SCENE.toml], --preset and --set.
+void addSceneInputOptions(CLI::App& command, SceneCommandOptions& options);
+
+// Adds the scene input and the shared options to `command`; `outputHelp` describes -o. --width
+// and --height only where the command makes an image.
 void addSceneOptions(CLI::App& command, SceneCommandOptions& options, const std::string& outputHelp,
                      bool imageSize = true);
 
-// The scene file (or the default scene), then each --set, then --width and --height. Throws
-// UserError for a bad file, key or value, and for --threads outside [0, 1024].
+// The scene file (or the default scene), then the preset, then each --set, then --width and
+// --height. Throws UserError for a bad file, preset, key or value, and for --threads outside
+// [0, 1024].
 Scene sceneFromOptions(const SceneCommandOptions& options);
+
+// Sets the table key `key` from the short flag `flag` (e.g. --period for cycles.period), naming
+// the flag in an error: "--period: cycles.period = 11 is out of range [1, 10]".
+void setFromFlag(Scene& scene, const std::string& flag, const std::string& key,
+                 const ParameterValue& value);
+
+// The end of a scene-reading command's --help: every scene key, then every preset.
+std::string sceneHelpFooter();
 
 // While alive, Ctrl-C sets flag() instead of ending the process (the work stops early and
 // nothing is written); the previous handler returns on destruction.

@@ -5,6 +5,7 @@
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
 #include "quaternia/util/error.h"
 
@@ -124,11 +125,16 @@ std::string renderCommandForScene(const Scene& scene) {
     return command;
 }
 
+namespace {
+
+// A ParameterValue (a number, boolean, string or array of numbers) as its JSON value.
+Json jsonValue(const ParameterValue& v) {
+    return std::visit([](const auto& x) { return Json(x); }, v);
+}
+
+}  // namespace
+
 std::string parameterTableJson(const Scene& base) {
-    // A ParameterValue (a number, boolean, string or array of numbers) as its JSON value.
-    auto value = [](const ParameterValue& v) {
-        return std::visit([](const auto& x) { return Json(x); }, v);
-    };
     Json table = Json::array();
     for (const Parameter& p : parameterTable()) {
         Json entry;
@@ -136,8 +142,8 @@ std::string parameterTableJson(const Scene& base) {
         entry["section"] = p.section;
         entry["key"] = p.key;
         entry["type"] = typeName(p.type);
-        entry["default"] = value(p.defaultValue);
-        entry["value"] = value(p.read(base));
+        entry["default"] = jsonValue(p.defaultValue);
+        entry["value"] = jsonValue(p.read(base));
         entry["minimum"] = p.minimum;
         entry["maximum"] = p.maximum;
         entry["choices"] = p.choices;
@@ -146,6 +152,20 @@ std::string parameterTableJson(const Scene& base) {
         table.push_back(std::move(entry));
     }
     return jsonText(table) + "\n";
+}
+
+std::string presetsJson() {
+    Json presets = Json::array();
+    for (const Preset& preset : scenePresets()) {
+        Json entry;
+        entry["name"] = preset.name;
+        entry["description"] = preset.description;
+        entry["values"] = Json::object();
+        for (const auto& [key, value] : preset.values)
+            entry["values"][key] = jsonValue(checkedValue(*findParameter(key), value));
+        presets.push_back(std::move(entry));
+    }
+    return jsonText(presets) + "\n";
 }
 
 std::string errorJson(const std::string& key, const std::string& message) {

@@ -55,6 +55,10 @@ std::string renderCommandForScene(const Scene& scene);
 // "minimum", "maximum", "choices", "allowed", "help"}, ...], where "value" is `base`'s.
 std::string parameterTableJson(const Scene& base);
 
+// The presets (presets.h) as JSON: [{"name", "description", "values": {"section.key": value}}],
+// in display order, each value as in parameterTableJson.
+std::string presetsJson();
+
 // {"error": message, "key": key}
 std::string errorJson(const std::string& key, const std::string& message);
 

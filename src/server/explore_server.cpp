@@ -175,6 +175,9 @@ void addRoutes(ExploreServer::State& state) {
     http.Get("/api/parameters", [&state](const Request&, Response& response) {
         response.set_content(parameterTableJson(state.options.startScene), "application/json");
     });
+    http.Get("/api/presets", [](const Request&, Response& response) {
+        response.set_content(presetsJson(), "application/json");
+    });
     http.Get("/api/render", [&state](const Request& request, Response& response) {
         renderRoute(state, request, response, false);
     });

@@ -10,6 +10,7 @@
 #include "quaternia/render/render.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
 #include "server/explore_request.h"
 #include "server/explore_test_client.h"
@@ -48,6 +49,25 @@ TEST_F(ExploreApi, ServesThePageAndTheParameterTable) {
     EXPECT_EQ((*c)["type"], "vector4");
     EXPECT_EQ((*c)["value"], Json(defaultScene().fractal.c)) << *c;
     EXPECT_TRUE((*c)["help"].is_string());
+}
+
+TEST_F(ExploreApi, ServesThePresetsOfTheLibrary) {
+    startServer(options());
+    auto r = get("/api/presets");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    EXPECT_EQ(r->get_header_value("Content-Type"), "application/json");
+    EXPECT_EQ(r->body, presetsJson());
+    // Each preset in order, with its description and the values the table holds for it.
+    Json presets = Json::parse(r->body);
+    ASSERT_EQ(presets.size(), scenePresets().size());
+    for (std::size_t i = 0; i < presets.size(); ++i) {
+        const Preset& preset = scenePresets()[i];
+        EXPECT_EQ(presets[i]["name"], preset.name);
+        EXPECT_EQ(presets[i]["description"], preset.description);
+    }
+    EXPECT_EQ(presets[0]["values"]["fractal.formula"], "z^2 + c") << r->body;
+    EXPECT_EQ(presets[0]["values"]["fractal.c"][0], -0.122561) << r->body;
 }
 
 TEST_F(ExploreApi, RendersTheSamePngAsTheLibrary) {

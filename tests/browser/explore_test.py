@@ -101,6 +101,20 @@ def main():
                 check(rendered.read() == shown,
                       "quaternia render of the copied command gives the PNG the page shows")
             step("quaternia render reproduced the page's image byte for byte")
+
+            # The preset buttons come from the server's list (GET /api/presets).
+            names = driver.execute_script(
+                "return [...document.querySelectorAll('#presets button')]"
+                ".map((b) => b.dataset.preset);")
+            check(names[0] == "Start" and "basilica" in names and "rabbit" in names,
+                  "preset buttons: %s" % names)
+            basilica = driver.find_element(By.CSS_SELECTOR, "#presets button[data-preset=basilica]")
+            scroll_into_view(driver, basilica)
+            basilica.click()
+            wait_until(driver, "return document.body.dataset.c === '[-1,0,0,0]';")
+            wait_for_final(driver)
+            check(shown_image(driver) != shown, "the basilica preset changes the image")
+            step("presets %s; basilica set c = -1" % names)
         errors = browser.uncaught_errors()
         check(not errors, "the page threw: %s" % errors)
         print("browser test: passed", flush=True)

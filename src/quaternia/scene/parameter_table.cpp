@@ -130,6 +130,8 @@ std::vector<Parameter> buildParameterTable() {
     using H = ShadingSettings;
     using P = PlaneSettings;
     using M = MeshSettings;
+    using O = OrbitSettings;
+    using Y = CyclesSettings;
     return {
         // [fractal]
         textParameter("fractal", "formula", &S::fractal, &F::formula, "z^2 + c", 1, 1000,
@@ -300,6 +302,19 @@ std::vector<Parameter> buildParameterTable() {
         realParameter("mesh", "min_component", &S::mesh, &M::minComponent, 0, 0, 1e6,
                       "Drops connected pieces of the mesh whose volume (world units cubed) is "
                       "below this; 0 keeps every piece"),
+        // [orbit]
+        vectorParameter("orbit", "z0", &S::orbit, &O::z0, {0, 0, 0, 0}, -1e6, 1e6,
+                        "`quaternia orbit`: the starting point (1, i, j, k) whose orbit under "
+                        "fractal.formula with fractal.c is followed"),
+        integerParameter("orbit", "max_iterations", &S::orbit, &O::maxIterations, 1000, 1, 1000000,
+                         "`quaternia orbit`: iterations before an orbit that neither escapes nor "
+                         "settles counts as undecided (far more than fractal.max_iterations)"),
+        // [cycles]
+        // degree^period points are solved for, at most 1024 (kMaxPeriodicPoints): period 10
+        // for a quadratic, less for higher degrees (checked by the command).
+        integerParameter("cycles", "period", &S::cycles, &Y::period, 1, 1, 10,
+                         "`quaternia cycles`: the period n whose periodic points are listed; "
+                         "degree^n must be at most 1024"),
     };
 }
 

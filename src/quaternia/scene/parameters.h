@@ -56,7 +56,7 @@ struct Parameter {
 };
 
 // Every parameter, grouped by section in the order fractal, slice, camera, render, shading, plane,
-// mesh.
+// mesh, orbit, cycles.
 // Builds the table (parameter_table.cpp); everything else reads it through parameterTable().
 std::vector<Parameter> buildParameterTable();
 

@@ -55,17 +55,18 @@ ParameterValue alternativeValue(const Parameter& p) {
 
 TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
     const auto& table = parameterTable();
-    EXPECT_EQ(table.size(), 54u);  // every field of Scene (scene.h)
+    EXPECT_EQ(table.size(), 57u);  // every field of Scene (scene.h)
     std::set<std::string> names;
     for (const auto& p : table) {
         EXPECT_TRUE(names.insert(p.name()).second) << p.name() << " is declared twice";
         EXPECT_EQ(findParameter(p.name()), &p);
         EXPECT_FALSE(p.help.empty()) << p.name();
     }
-    EXPECT_EQ(parameterSections(), (std::vector<std::string>{"fractal", "slice", "camera", "render",
-                                                             "shading", "plane", "mesh"}));
+    EXPECT_EQ(parameterSections(),
+              (std::vector<std::string>{"fractal", "slice", "camera", "render", "shading", "plane",
+                                        "mesh", "orbit", "cycles"}));
     EXPECT_EQ(table.front().name(), "fractal.formula");
-    EXPECT_EQ(table.back().name(), "mesh.min_component");
+    EXPECT_EQ(table.back().name(), "cycles.period");
     EXPECT_EQ(findParameter("render"), nullptr);
     EXPECT_EQ(findParameter("render.widt"), nullptr);
     EXPECT_EQ(findParameter("render.width.x"), nullptr);
@@ -145,6 +146,10 @@ TEST(ParameterDefaults, MatchesTheTable) {
     EXPECT_EQ(h.backgroundBottom, Color(0.002, 0.002, 0.004));
     EXPECT_EQ(h.gamma, 2.2);
     EXPECT_EQ(h.exposure, 1.0);
+
+    EXPECT_EQ(s.orbit.z0, Quaternion(0, 0, 0, 0));
+    EXPECT_EQ(s.orbit.maxIterations, 1000);
+    EXPECT_EQ(s.cycles.period, 1);
 
     EXPECT_NO_THROW(validateScene(s));
 }

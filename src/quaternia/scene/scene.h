@@ -105,6 +105,17 @@ struct MeshSettings {
     double minComponent = 0;  // connected components of smaller |volume| are dropped (world^3)
 };
 
+// `quaternia orbit` and `quaternia cycles` (the dynamics of [fractal]'s map with its c): where
+// an orbit starts and how long it is followed, and the period whose cycles are listed.
+struct OrbitSettings {
+    Quaternion z0;          // (1, i, j, k)
+    int maxIterations = 0;  // far more than a render's: slow orbits settle late
+};
+
+struct CyclesSettings {
+    int period = 0;
+};
+
 struct Scene {
     FractalSettings fractal;
     SliceSettings slice;
@@ -113,6 +124,8 @@ struct Scene {
     ShadingSettings shading;
     PlaneSettings plane;
     MeshSettings mesh;
+    OrbitSettings orbit;
+    CyclesSettings cycles;
 };
 
 }  // namespace quaternia

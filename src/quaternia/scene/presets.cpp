@@ -1,0 +1,80 @@
+#include "quaternia/scene/presets.h"
+
+#include <algorithm>
+
+#include "quaternia/util/error.h"
+
+namespace quaternia {
+namespace {
+
+using Values = std::vector<std::pair<std::string, ParameterValue>>;
+
+Values quadratic(std::vector<double> c) {
+    return {{"fractal.formula", std::string("z^2 + c")}, {"fractal.c", std::move(c)}};
+}
+
+}  // namespace
+
+const std::vector<Preset>& scenePresets() {
+    static const std::vector<Preset> presets = {
+        {"rabbit", "Douady's rabbit, c = -0.122561+0.744862i: an attracting 3-cycle",
+         quadratic({-0.122561, 0.744862, 0, 0})},
+        {"dendrite", "c = i: a dendrite, connected without interior (0 is strictly preperiodic)",
+         quadratic({0, 1, 0, 0})},
+        {"basilica", "c = -1: the basilica, a superattracting 2-cycle 0 -> -1",
+         quadratic({-1, 0, 0, 0})},
+        {"4d-blob", "c = -0.2+0.4i-0.4j-0.4k, with j and k parts: a rounded blob",
+         quadratic({-0.2, 0.4, -0.4, -0.4})},
+        {"cubic",
+         "z^3 + c with c = -0.5+0.5i: threefold symmetry",
+         {{"fractal.formula", std::string("z^3 + c")},
+          {"fractal.c", std::vector{-0.5, 0.5, 0.0, 0.0}}}},
+        {"two-sided",
+         "(1+2i) z (0.5-k) z + c: coefficients in different complex planes, a truly "
+         "quaternion map",
+         {{"fractal.formula", std::string("(1+2i) z (0.5-k) z + c")},
+          {"fractal.c", std::vector{-0.2, 0.6, 0.2, 0.2}}}},
+    };
+    return presets;
+}
+
+const Preset* findPreset(std::string_view name) {
+    for (const Preset& preset : scenePresets())
+        if (preset.name == name) return &preset;
+    return nullptr;
+}
+
+void applyPreset(Scene& scene, std::string_view name) {
+    const Preset* preset = findPreset(name);
+    if (preset == nullptr) {
+        // The nearest name by edits; ties go to the earlier preset.
+        const auto& presets = scenePresets();
+        auto nearest = std::min_element(presets.begin(), presets.end(), [&](auto& a, auto& b) {
+            return editDistance(name, a.name) < editDistance(name, b.name);
+        });
+        throw UserError("preset", "unknown preset '" + std::string(name) + "' (did you mean '" +
+                                      nearest->name + "'?)");
+    }
+    for (const auto& [key, value] : preset->values)
+        setParameter(scene, key, value);
+}
+
+std::string presetNames() {
+    std::string names;
+    for (const Preset& preset : scenePresets())
+        names += (names.empty() ? "" : ", ") + preset.name;
+    return names;
+}
+
+std::string presetHelp() {
+    std::size_t width = 0;
+    for (const Preset& preset : scenePresets())
+        width = std::max(width, preset.name.size());
+    std::string out = "Presets (--preset NAME):\n";
+    for (const Preset& preset : scenePresets())
+        out += "  " + preset.name + std::string(width + 2 - preset.name.size(), ' ') +
+               preset.description + "\n";
+    return out;
+}
+
+}  // namespace quaternia
