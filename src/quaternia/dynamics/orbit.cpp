@@ -56,6 +56,81 @@ struct Recurrence {
     int index = -1, period = 0;
 };
 
+// The iterates of z0 up to the first that escapes or recurs, or to maxIterations.
+struct OrbitWalk {
+    std::vector<Quaternion> orbit;
+    double scale = 1;  // the largest |z_k| (at least 1), which the tolerance is relative to
+    Recurrence recurrence;
+    int escapeIteration = -1;
+};
+
+OrbitWalk walkOrbit(const Polynomial& p, const Quaternion& z0, double escapeRadius,
+                    const OrbitOptions& options) {
+    OrbitWalk walk;
+    std::vector<Quaternion>& orbit = walk.orbit;
+    orbit.push_back(z0);
+    walk.scale = std::max(1.0, norm(z0));
+    for (int k = 0;; ++k) {
+        const Quaternion& z = orbit[k];
+        walk.scale = std::max(walk.scale, norm(z));
+        if (norm(z) > escapeRadius) {
+            walk.escapeIteration = k;
+            return walk;
+        }
+        const double tolerance = options.tolerance * walk.scale;
+        for (int j = k - 1; j >= std::max(0, k - options.maxPeriod); --j) {
+            if (norm(z - orbit[j]) <= tolerance) {
+                walk.recurrence = {k, k - j};
+                break;
+            }
+        }
+        if (walk.recurrence.index >= 0 || k == options.maxIterations) return walk;
+        orbit.push_back(p.evaluate(z));
+    }
+}
+
+// The first iterate on the cycle (within tol): the orbit's preperiod. The cycle is rotated so
+// that its points[0] is the point the orbit meets there.
+int meetCycle(const Polynomial& p, const std::vector<Quaternion>& orbit, double tol,
+              CycleAnalysis& cycle) {
+    int hit = 0;
+    while (distanceToCycle(orbit[hit], cycle.points) > tol)
+        ++hit;  // ends at the recurrence's index at the latest
+    for (size_t k = 0; k < cycle.points.size(); ++k) {
+        if (norm(orbit[hit] - cycle.points[k]) <= tol) {
+            std::rotate(cycle.points.begin(), cycle.points.begin() + std::ptrdiff_t(k),
+                        cycle.points.end());
+            cycle.jacobian = cycleJacobian(p, cycle.points);
+            break;
+        }
+    }
+    return hit;
+}
+
+// The fate of an orbit that meets its cycle at iterate `hit`: periodic where it starts on the
+// cycle; preperiodic where the governing class repels (or is a saddle) or where the orbit jumps
+// onto the cycle; attracted otherwise.
+void decideFate(const std::vector<Quaternion>& orbit, int hit, double scale, OrbitResult& result) {
+    const CycleAnalysis& cycle = *result.cycle;
+    const double tol = result.tolerance;
+    Stability stability = result.governingClass.stability;
+    if (hit == 0) {
+        result.fate = OrbitFate::Periodic;
+    } else if (stability == Stability::Repelling || stability == Stability::Saddle) {
+        result.fate = OrbitFate::Preperiodic;
+    } else {
+        bool jumped = distanceToCycle(orbit[hit], cycle.points) <= 1e-3 * tol &&
+                      distanceToCycle(orbit[hit - 1], cycle.points) > 1e-4 * scale;
+        result.fate = jumped ? OrbitFate::Preperiodic : OrbitFate::Attracted;
+        if (stability == Stability::Neutral) {
+            result.unsure = true;
+            result.note =
+                "neutral cycle: landing on it and slow convergence to it cannot be "
+                "told apart numerically";
+        }
+    }
+}
+
 }  // namespace
 
 std::string toString(OrbitFate fate) {
@@ -115,29 +190,16 @@ CycleAnalysis analyzeCycle(const Polynomial& p, const Quaternion& start, int per
 OrbitResult analyzeOrbit(const Polynomial& p, const Quaternion& z0, const OrbitOptions& options) {
     OrbitResult result;
     result.escapeRadius = p.escapeRadius();
-    std::vector<Quaternion> orbit{z0};
-    double scale = std::max(1.0, norm(z0));
-    Recurrence recurrence;
-    for (int k = 0;; ++k) {
-        const Quaternion& z = orbit[k];
-        scale = std::max(scale, norm(z));
-        result.tolerance = options.tolerance * scale;
-        if (norm(z) > result.escapeRadius) {
-            result.fate = OrbitFate::Escapes;
-            result.escapeIteration = k;
-            result.iterations = k;
-            return result;
-        }
-        for (int j = k - 1; j >= std::max(0, k - options.maxPeriod); --j) {
-            if (norm(z - orbit[j]) <= result.tolerance) {
-                recurrence = {k, k - j};
-                break;
-            }
-        }
-        if (recurrence.index >= 0 || k == options.maxIterations) break;
-        orbit.push_back(p.evaluate(z));
-    }
+    const OrbitWalk walk = walkOrbit(p, z0, result.escapeRadius, options);
+    const std::vector<Quaternion>& orbit = walk.orbit;
+    const Recurrence& recurrence = walk.recurrence;
+    result.tolerance = options.tolerance * walk.scale;
     result.iterations = int(orbit.size()) - 1;
+    if (walk.escapeIteration >= 0) {
+        result.fate = OrbitFate::Escapes;
+        result.escapeIteration = walk.escapeIteration;
+        return result;
+    }
     if (recurrence.index < 0) {
         result.note = "no escape and no cycle within " + std::to_string(options.maxIterations) +
                       " iterations";
@@ -160,35 +222,8 @@ OrbitResult analyzeOrbit(const Polynomial& p, const Quaternion& z0, const OrbitO
     bool orbitInPlane = cycle.multiplier && inPlane(z0, cycle.axis);
     result.governingClass = orbitInPlane ? cycle.complexClass : cycle.classInH;
     result.unsure = result.unsure || result.governingClass.unsure;
-
-    int hit = 0;
-    while (distanceToCycle(orbit[hit], cycle.points) > tol)
-        ++hit;  // ends at recurrence.index at the latest
-    // Rotate the cycle so that points[0] is the point the orbit meets first.
-    for (int k = 0; k < period; ++k) {
-        if (norm(orbit[hit] - cycle.points[k]) <= tol) {
-            std::rotate(cycle.points.begin(), cycle.points.begin() + k, cycle.points.end());
-            cycle.jacobian = cycleJacobian(p, cycle.points);
-            break;
-        }
-    }
-    result.preperiod = hit;
-    Stability stability = result.governingClass.stability;
-    if (hit == 0) {
-        result.fate = OrbitFate::Periodic;
-    } else if (stability == Stability::Repelling || stability == Stability::Saddle) {
-        result.fate = OrbitFate::Preperiodic;
-    } else {
-        bool jumped = distanceToCycle(orbit[hit], cycle.points) <= 1e-3 * tol &&
-                      distanceToCycle(orbit[hit - 1], cycle.points) > 1e-4 * scale;
-        result.fate = jumped ? OrbitFate::Preperiodic : OrbitFate::Attracted;
-        if (stability == Stability::Neutral) {
-            result.unsure = true;
-            result.note =
-                "neutral cycle: landing on it and slow convergence to it cannot be "
-                "told apart numerically";
-        }
-    }
+    result.preperiod = meetCycle(p, orbit, tol, cycle);
+    decideFate(orbit, result.preperiod, walk.scale, result);
     return result;
 }
 

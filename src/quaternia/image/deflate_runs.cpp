@@ -247,10 +247,27 @@ void parseBlock(const uint8_t* input, size_t begin, size_t end, int previous, Pa
     parse.anyRun = anyRun;
 }
 
-// Writes one block: with its own Huffman codes, or stored where that is shorter.
-void writeBlock(const uint8_t* input, size_t begin, size_t end, const Parse& parse, bool final,
-                BitWriter& out) {
+// A symbol of the code length code (RFC 1951 3.2.7): a length 0..15, or a run of zeros (17:
+// 3..10 of them, 18: 11..138) with its count less the shortest in `extra`.
+struct CodeLengthSymbol {
+    uint8_t symbol, extra;
+};
+
+// A block's codes as its header sends them (RFC 1951 3.2.7): the literal/length code's lengths,
+// the distance code's one length, and the code length code those lengths are sent in.
+struct BlockCodes {
     uint8_t literalLengths[kLiteralLengthSymbols];
+    int literalCount = kLiteralLengthSymbols;  // HLIT + 257: the lengths sent, trailing zeros cut
+    // Runs are at distance 1, distance code 0: one code of one bit (RFC 1951 3.2.7 allows a
+    // single distance code), or none at all (one distance code of zero bits) without runs.
+    uint8_t distanceLength = 0;
+    std::vector<CodeLengthSymbol> lengthSymbols;  // the lengths of both codes, zeros in runs
+    uint8_t codeLengthLengths[kCodeLengthSymbols];
+    int codeLengthCount = kCodeLengthSymbols;  // HCLEN + 4, in kCodeLengthOrder
+};
+
+// The literal/length code of the parse (and the distance code's length).
+void buildLiteralCode(const Parse& parse, BlockCodes& codes) {
     uint32_t frequency[kLiteralLengthSymbols];
     std::copy(std::begin(parse.literalLengthFrequency), std::end(parse.literalLengthFrequency),
               frequency);
@@ -259,21 +276,19 @@ void writeBlock(const uint8_t* input, size_t begin, size_t end, const Parse& par
     if (std::count_if(frequency, frequency + kLiteralLengthSymbols,
                       [](uint32_t f) { return f > 0; }) < 2)
         frequency[0] = 1;
-    huffmanLengths(frequency, kLiteralLengthSymbols, kMaxCodeLength, literalLengths);
-    int literalCount = kLiteralLengthSymbols;
-    while (literalCount > 257 && literalLengths[literalCount - 1] == 0)
-        --literalCount;
-    // Runs are at distance 1, distance code 0: one code of one bit (RFC 1951 3.2.7 allows a
-    // single distance code), or none at all (one distance code of zero bits) without runs.
-    const uint8_t distanceLength = parse.anyRun ? 1 : 0;
+    huffmanLengths(frequency, kLiteralLengthSymbols, kMaxCodeLength, codes.literalLengths);
+    codes.literalCount = kLiteralLengthSymbols;
+    while (codes.literalCount > 257 && codes.literalLengths[codes.literalCount - 1] == 0)
+        --codes.literalCount;
+    codes.distanceLength = parse.anyRun ? 1 : 0;
+}
 
-    // The code lengths of both codes in one sequence, zeros in runs (symbols 17 and 18).
-    std::vector<uint8_t> sequence(literalLengths, literalLengths + literalCount);
-    sequence.push_back(distanceLength);
-    struct CodeLengthSymbol {
-        uint8_t symbol, extra;
-    };
-    std::vector<CodeLengthSymbol> lengthSymbols;
+// The code lengths of both codes in one sequence, zeros in runs (symbols 17 and 18), and the
+// code length code that sends them.
+void buildCodeLengthCode(BlockCodes& codes) {
+    std::vector<uint8_t> sequence(codes.literalLengths, codes.literalLengths + codes.literalCount);
+    sequence.push_back(codes.distanceLength);
+    std::vector<CodeLengthSymbol>& lengthSymbols = codes.lengthSymbols;
     uint32_t codeLengthFrequency[kCodeLengthSymbols] = {};
     for (size_t i = 0; i < sequence.size();) {
         size_t zeros = 0;
@@ -295,68 +310,86 @@ void writeBlock(const uint8_t* input, size_t begin, size_t end, const Parse& par
     if (std::count_if(std::begin(codeLengthFrequency), std::end(codeLengthFrequency),
                       [](uint32_t f) { return f > 0; }) < 2)
         ++codeLengthFrequency[codeLengthFrequency[0] > 0 ? 18 : 0];
-    uint8_t codeLengthLengths[kCodeLengthSymbols];
     huffmanLengths(codeLengthFrequency, kCodeLengthSymbols, kMaxCodeLengthCodeLength,
-                   codeLengthLengths);
-    int codeLengthCount = kCodeLengthSymbols;
-    while (codeLengthCount > 4 &&
-           codeLengthLengths[kCodeLengthOrder[size_t(codeLengthCount - 1)]] == 0)
-        --codeLengthCount;
+                   codes.codeLengthLengths);
+    codes.codeLengthCount = kCodeLengthSymbols;
+    while (codes.codeLengthCount > 4 &&
+           codes.codeLengthLengths[kCodeLengthOrder[size_t(codes.codeLengthCount - 1)]] == 0)
+        --codes.codeLengthCount;
+}
 
-    // The block's size both ways, in bits.
-    uint64_t huffmanBits = 3 + 5 + 5 + 4 + 3 * uint64_t(codeLengthCount);
-    for (const CodeLengthSymbol& s : lengthSymbols)
-        huffmanBits += codeLengthLengths[s.symbol] + (s.symbol == 18 ? 7 : s.symbol == 17 ? 3 : 0);
+// The size of the block with these codes, header included, in bits.
+uint64_t dynamicBlockBits(const Parse& parse, const BlockCodes& codes) {
+    uint64_t bits = 3 + 5 + 5 + 4 + 3 * uint64_t(codes.codeLengthCount);
+    for (const CodeLengthSymbol& s : codes.lengthSymbols)
+        bits += codes.codeLengthLengths[s.symbol] + (s.symbol == 18 ? 7 : s.symbol == 17 ? 3 : 0);
     for (int s = 0; s < kLiteralLengthSymbols; ++s) {
-        uint64_t perSymbol = literalLengths[s];
-        if (s > 256) perSymbol += kLengthExtraBits[size_t(s - 257)] + distanceLength;
-        huffmanBits += uint64_t(parse.literalLengthFrequency[s]) * perSymbol;
+        uint64_t perSymbol = codes.literalLengths[s];
+        if (s > 256) perSymbol += kLengthExtraBits[size_t(s - 257)] + codes.distanceLength;
+        bits += uint64_t(parse.literalLengthFrequency[s]) * perSymbol;
     }
-    const uint64_t storedBits = 3 + 7 + 32 + 8 * uint64_t(end - begin);
-    if (storedBits <= huffmanBits) {
-        out.put(final ? 1 : 0, 3);  // BFINAL, BTYPE 00
-        out.alignToByte();
-        const uint32_t length = uint32_t(end - begin);
-        out.put(length | (uint32_t(~length & 0xffff) << 16), 32);
-        out.putBytes(input + begin, end - begin);
-        return;
-    }
+    return bits;
+}
 
-    uint16_t literalCodes[kLiteralLengthSymbols] = {}, codeLengthCodes[kCodeLengthSymbols] = {};
-    canonicalCodes(literalLengths, kLiteralLengthSymbols, literalCodes);
-    canonicalCodes(codeLengthLengths, kCodeLengthSymbols, codeLengthCodes);
+// The size of `bytes` bytes as a stored block, in bits (at most 7 of them to the byte boundary).
+uint64_t storedBlockBits(size_t bytes) {
+    return 3 + 7 + 32 + 8 * uint64_t(bytes);
+}
+
+void writeStoredBlock(const uint8_t* bytes, size_t count, bool final, BitWriter& out) {
+    out.put(final ? 1 : 0, 3);  // BFINAL, BTYPE 00
+    out.alignToByte();
+    const uint32_t length = uint32_t(count);
+    out.put(length | (uint32_t(~length & 0xffff) << 16), 32);
+    out.putBytes(bytes, count);
+}
+
+// A dynamic block's header: its type, the code counts, the code length code, and the lengths
+// of both codes in that code.
+void writeDynamicHeader(const BlockCodes& codes, bool final, BitWriter& out) {
+    uint16_t codeLengthCodes[kCodeLengthSymbols] = {};
+    canonicalCodes(codes.codeLengthLengths, kCodeLengthSymbols, codeLengthCodes);
     out.put((final ? 1 : 0) | (2 << 1), 3);  // BFINAL, BTYPE 10: dynamic codes
-    out.put(uint64_t(literalCount - 257), 5);
+    out.put(uint64_t(codes.literalCount - 257), 5);
     out.put(0, 5);  // one distance code
-    out.put(uint64_t(codeLengthCount - 4), 4);
-    for (int i = 0; i < codeLengthCount; ++i)
-        out.put(codeLengthLengths[kCodeLengthOrder[size_t(i)]], 3);
-    for (const CodeLengthSymbol& s : lengthSymbols) {
-        out.put(codeLengthCodes[s.symbol], codeLengthLengths[s.symbol]);
+    out.put(uint64_t(codes.codeLengthCount - 4), 4);
+    for (int i = 0; i < codes.codeLengthCount; ++i)
+        out.put(codes.codeLengthLengths[kCodeLengthOrder[size_t(i)]], 3);
+    for (const CodeLengthSymbol& s : codes.lengthSymbols) {
+        out.put(codeLengthCodes[s.symbol], codes.codeLengthLengths[s.symbol]);
         if (s.symbol == 17) out.put(s.extra, 3);
         if (s.symbol == 18) out.put(s.extra, 7);
     }
-    // Each run as one put: its length code, extra bits and the distance code's one 0 bit.
-    struct RunCode {
-        uint32_t bits;
-        uint8_t count;
-    };
-    std::array<RunCode, kMaxRun + 1> runCodes{};
-    if (parse.anyRun) {
-        for (int length = kMinRun; length <= kMaxRun; ++length) {
-            const int code = kLengthCodeOf[size_t(length)];
-            const int symbol = 257 + code;
-            const int extraBits = kLengthExtraBits[size_t(code)];
-            const uint32_t extra = uint32_t(length - kLengthBase[size_t(code)]);
-            runCodes[size_t(length)] = {
-                uint32_t(literalCodes[symbol]) | (extra << literalLengths[symbol]),
-                uint8_t(literalLengths[symbol] + extraBits + distanceLength)};
-        }
+}
+
+// Each run as one put: its length code, extra bits and the distance code's one 0 bit.
+struct RunCode {
+    uint32_t bits;
+    uint8_t count;
+};
+using RunCodes = std::array<RunCode, kMaxRun + 1>;
+
+void makeRunCodes(const BlockCodes& codes, const uint16_t* literalCodes, RunCodes& runCodes) {
+    for (int length = kMinRun; length <= kMaxRun; ++length) {
+        const int code = kLengthCodeOf[size_t(length)];
+        const int symbol = 257 + code;
+        const int extraBits = kLengthExtraBits[size_t(code)];
+        const uint32_t extra = uint32_t(length - kLengthBase[size_t(code)]);
+        runCodes[size_t(length)] = {
+            uint32_t(literalCodes[symbol]) | (extra << codes.literalLengths[symbol]),
+            uint8_t(codes.literalLengths[symbol] + extraBits + codes.distanceLength)};
     }
+}
+
+// The parse's symbols in the block's codes, and the end of the block.
+void writeSymbols(const Parse& parse, const BlockCodes& codes, const uint16_t* literalCodes,
+                  BitWriter& out) {
+    RunCodes runCodes{};
+    if (parse.anyRun) makeRunCodes(codes, literalCodes, runCodes);
     // A literal's code and length in one word.
     uint32_t literalWords[256];
     for (int s = 0; s < 256; ++s)
-        literalWords[s] = uint32_t(literalCodes[s]) | uint32_t(literalLengths[s]) << 16;
+        literalWords[s] = uint32_t(literalCodes[s]) | uint32_t(codes.literalLengths[s]) << 16;
     const uint16_t* symbols = parse.symbols.data();
     for (size_t k = 0; k < parse.count; ++k) {
         // Three literals in one put where they come together (at most 45 bits).
@@ -379,7 +412,23 @@ void writeBlock(const uint8_t* input, size_t begin, size_t end, const Parse& par
             out.put(run.bits, run.count);  // the distance code 0 is the bit 0 above them
         }
     }
-    out.put(literalCodes[kEndOfBlock], literalLengths[kEndOfBlock]);
+    out.put(literalCodes[kEndOfBlock], codes.literalLengths[kEndOfBlock]);
+}
+
+// Writes one block: with its own Huffman codes, or stored where that is shorter.
+void writeBlock(const uint8_t* input, size_t begin, size_t end, const Parse& parse, bool final,
+                BitWriter& out) {
+    BlockCodes codes;
+    buildLiteralCode(parse, codes);
+    buildCodeLengthCode(codes);
+    if (storedBlockBits(end - begin) <= dynamicBlockBits(parse, codes)) {
+        writeStoredBlock(input + begin, end - begin, final, out);
+        return;
+    }
+    uint16_t literalCodes[kLiteralLengthSymbols] = {};
+    canonicalCodes(codes.literalLengths, kLiteralLengthSymbols, literalCodes);
+    writeDynamicHeader(codes, final, out);
+    writeSymbols(parse, codes, literalCodes, out);
 }
 
 }  // namespace

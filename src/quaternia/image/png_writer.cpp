@@ -60,6 +60,17 @@ void appendChunk(std::vector<uint8_t>& png, const char (&type)[5], const uint8_t
     png.insert(png.end(), field, field + 4);
 }
 
+// The sizes of the image's rows: as the source gives them, and filtered (a filter byte first).
+struct RowLayout {
+    size_t height, rowBytes, filteredRowBytes, bytesPerPixel;
+
+    explicit RowLayout(const PngFormat& format)
+        : height(size_t(format.height)),
+          rowBytes(pngRowBytes(format)),
+          filteredRowBytes(rowBytes + 1),
+          bytesPerPixel(size_t(pngChannels(format.colorType) * format.bitDepth / 8)) {}
+};
+
 // Rows [firstRow, endRow) of each piece; every piece but the last has rowsPerPiece rows.
 struct PieceLayout {
     size_t rowsPerPiece = 1, count = 0;
@@ -71,6 +82,36 @@ struct PieceLayout {
     size_t endRow(size_t piece, size_t height) const {
         return std::min(height, (piece + 1) * rowsPerPiece);
     }
+    // Where a piece's filtering starts: one row before its own, whose last filtered byte a run
+    // at its start may continue (Paeth predicts that row from the one above it, which the
+    // source gives too). That row is filtered twice, by this piece and the one before, so that
+    // nothing is shared between tasks.
+    size_t filterFrom(size_t piece) const {
+        const size_t first = firstRow(piece);
+        return first - std::min<size_t>(first, 1);
+    }
+};
+
+// Each thread's rows and buffers, kept from piece to piece (fresh ones for every piece were page
+// faults: a piece's filtered rows and its deflate room are 256 KiB each).
+struct PieceScratch {
+    std::vector<uint8_t> zeroRow, rows[2], filtered, deflated;
+};
+
+// What the pieces' tasks give back, piece by piece.
+struct EncodedPieces {
+    // The zlib stream's checksum is of the filtered bytes, summed piece by piece (in lanes:
+    // zlib's adler32 is scalar) and joined by adler32_combine.
+    std::vector<uLong> adler;
+    // Each piece deflated on its own, ending on a byte boundary (but the last, which ends with
+    // the final block), so that the pieces simply join. The first carries the zlib header, the
+    // last the checksum (appendChecksum, once every piece's sum is known).
+    std::vector<std::vector<uint8_t>> compressed;
+    // The CRC of each piece's IDAT chunk, taken by its task (but the last piece's, which the
+    // checksum joins later, and pieces too large for one chunk).
+    std::vector<std::optional<uLong>> crc;
+
+    explicit EncodedPieces(size_t count) : adler(count), compressed(count), crc(count) {}
 };
 
 void checkFormat(const PngFormat& format) {
@@ -84,6 +125,93 @@ void checkFormat(const PngFormat& format, size_t sampleBytes) {
     checkFormat(format);
     if (sampleBytes != pngRowBytes(format) * size_t(format.height))
         throw std::invalid_argument("PNG samples do not match the image's size");
+}
+
+// Rows [from, end) filtered into scratch.filtered, each a scanline: the filter byte, then the
+// row's bytes filtered.
+void filterRows(const RowLayout& rows, const PngRowSource& rowAt, size_t from, size_t end,
+                PieceScratch& scratch) {
+    scratch.filtered.resize((end - from) * rows.filteredRowBytes);
+    const uint8_t* previous =
+        from == 0 ? scratch.zeroRow.data() : rowAt(from - 1, scratch.rows[0].data());
+    int next = 1;  // the scratch row the source may write next; previous may be in the other
+    for (size_t y = from; y < end; ++y) {
+        const uint8_t* row = rowAt(y, scratch.rows[next].data());
+        uint8_t* scanline = scratch.filtered.data() + (y - from) * rows.filteredRowBytes;
+        scanline[0] = kPaethFilter;
+        filterPaethRow(row, previous, rows.rowBytes, rows.bytesPerPixel, scanline + 1);
+        previous = row;
+        next ^= 1;
+    }
+}
+
+// Piece `piece`: its rows filtered, their sum taken, deflated into the thread's room and kept at
+// their size (after the zlib header in the first piece), and its chunk's CRC where it is known.
+void encodePiece(const RowLayout& rows, const PieceLayout& pieces, const PngRowSource& rowAt,
+                 size_t piece, PieceScratch& scratch, EncodedPieces& encoded) {
+    const size_t firstRow = pieces.firstRow(piece), endRow = pieces.endRow(piece, rows.height);
+    const size_t filterFrom = pieces.filterFrom(piece);
+    filterRows(rows, rowAt, filterFrom, endRow, scratch);
+    const uint8_t* own = scratch.filtered.data() + (firstRow - filterFrom) * rows.filteredRowBytes;
+    const size_t ownBytes = (endRow - firstRow) * rows.filteredRowBytes;
+    encoded.adler[piece] = adler32Update(1, own, ownBytes);
+
+    const int before = own > scratch.filtered.data() ? own[-1] : -1;
+    const bool last = piece + 1 == pieces.count;
+    scratch.deflated.resize(std::max(scratch.deflated.size(), deflateRunsBound(ownBytes)));
+    const size_t written = deflateRuns(own, ownBytes, before, last, scratch.deflated.data());
+    std::vector<uint8_t>& out = encoded.compressed[piece];
+    if (piece == 0) out.assign(kZlibHeader, kZlibHeader + sizeof kZlibHeader);
+    out.insert(out.end(), scratch.deflated.begin(),
+               scratch.deflated.begin() + std::ptrdiff_t(written));
+    if (!last && out.size() <= kMaxChunkData)
+        encoded.crc[piece] = chunkCrc("IDAT", out.data(), out.size());
+}
+
+// The zlib stream's checksum, the pieces' sums joined, at the end of the last piece.
+void appendChecksum(const RowLayout& rows, const PieceLayout& pieces, EncodedPieces& encoded) {
+    uLong adler = adler32_z(0, nullptr, 0);
+    for (size_t piece = 0; piece < pieces.count; ++piece) {
+        const size_t pieceRows = pieces.endRow(piece, rows.height) - pieces.firstRow(piece);
+        adler = adler32_combine(adler, encoded.adler[piece],
+                                z_off_t(pieceRows * rows.filteredRowBytes));
+    }
+    uint8_t checksum[4];
+    putU32(checksum, uint32_t(adler));
+    std::vector<uint8_t>& last = encoded.compressed.back();
+    last.insert(last.end(), checksum, checksum + sizeof checksum);
+}
+
+// The PNG file: signature, IHDR, the pieces as IDAT chunks (each in several where it is too
+// large for one), IEND.
+std::vector<uint8_t> assemblePng(const PngFormat& format, const EncodedPieces& encoded) {
+    size_t total = sizeof kPngSignature + 25 + 12;  // signature, IHDR, IEND
+    for (const std::vector<uint8_t>& piece : encoded.compressed)
+        total += piece.size() + 12 * (1 + piece.size() / kMaxChunkData);
+    std::vector<uint8_t> png;
+    png.reserve(total);
+    png.assign(kPngSignature, kPngSignature + sizeof kPngSignature);
+    uint8_t header[13];
+    putU32(header, uint32_t(format.width));
+    putU32(header + 4, uint32_t(format.height));
+    header[8] = uint8_t(format.bitDepth);
+    header[9] = uint8_t(format.colorType);
+    header[10] = 0;  // compression: deflate
+    header[11] = 0;  // filter method: the five adaptive filters
+    header[12] = 0;  // not interlaced
+    appendChunk(png, "IHDR", header, sizeof header);
+    for (size_t p = 0; p < encoded.compressed.size(); ++p) {
+        const std::vector<uint8_t>& piece = encoded.compressed[p];
+        if (encoded.crc[p]) {
+            appendChunk(png, "IDAT", piece.data(), piece.size(), encoded.crc[p]);
+            continue;
+        }
+        for (size_t offset = 0; offset < piece.size(); offset += kMaxChunkData)
+            appendChunk(png, "IDAT", piece.data() + offset,
+                        std::min(kMaxChunkData, piece.size() - offset));
+    }
+    appendChunk(png, "IEND", nullptr, 0);
+    return png;
 }
 
 }  // namespace
@@ -103,115 +231,25 @@ std::vector<uint8_t> writePngBytes(const PngFormat& format, std::span<const uint
 
 std::vector<uint8_t> writePngRows(const PngFormat& format, const PngRowSource& rowAt, int threads) {
     checkFormat(format);
-    const size_t height = size_t(format.height);
-    const size_t rowBytes = pngRowBytes(format);
-    const size_t filteredRowBytes = rowBytes + 1;
-    const size_t bytesPerPixel = size_t(pngChannels(format.colorType) * format.bitDepth / 8);
-    const PieceLayout pieces(height, filteredRowBytes);
-    // Each piece is filtered and deflated by one task, from the rows the source gives it: its
-    // own, and before them the row whose last filtered byte a run at its start may continue and
-    // the one row above that, which Paeth predicts from. That row is filtered twice, by this
-    // piece and the one before; nothing is shared between tasks, and the samples never exist as
-    // a whole image.
-    const size_t rowsBefore = 1;
-
+    const RowLayout rows(format);
+    const PieceLayout pieces(rows.height, rows.filteredRowBytes);
+    // Each piece is filtered and deflated by one task, from the rows the source gives it: the
+    // samples never exist as a whole image.
+    EncodedPieces encoded(pieces.count);
+    std::vector<PieceScratch> scratches(size_t(resolveThreadCount(threads)));
     ParallelOptions options;
     options.threads = threads;
     options.chunkSize = 1;  // one piece at a time, so uneven pieces balance
-
-    // The zlib stream's checksum is of the filtered bytes, summed piece by piece (in lanes:
-    // zlib's adler32 is scalar) and joined by adler32_combine.
-    std::vector<uLong> pieceAdler(pieces.count);
-    // Each piece deflated on its own, ending on a byte boundary (but the last, which ends with
-    // the final block), so that the pieces simply join. The first carries the zlib header, the
-    // last the checksum (appended below, once every piece's sum is known).
-    std::vector<std::vector<uint8_t>> compressed(pieces.count);
-    // The CRC of each piece's IDAT chunk, taken by its task (but the last piece's, which the
-    // checksum joins later, and pieces too large for one chunk).
-    std::vector<std::optional<uLong>> pieceCrc(pieces.count);
-    // Each thread's rows and buffers, kept from piece to piece (fresh ones for every piece
-    // were page faults: a piece's filtered rows and its deflate room are 256 KiB each).
-    struct Scratch {
-        std::vector<uint8_t> zeroRow, rows[2], filtered, deflated;
-    };
-    std::vector<Scratch> scratches(size_t(resolveThreadCount(threads)));
     parallelFor(int64_t(pieces.count), options, [&](int64_t begin, int64_t end, int thread) {
-        Scratch& scratch = scratches[size_t(thread)];
-        scratch.zeroRow.assign(rowBytes, 0);
-        scratch.rows[0].resize(rowBytes);
-        scratch.rows[1].resize(rowBytes);
-        std::vector<uint8_t>& filtered = scratch.filtered;
-        for (size_t piece = size_t(begin); piece < size_t(end); ++piece) {
-            const size_t firstRow = pieces.firstRow(piece), endRow = pieces.endRow(piece, height);
-            const size_t filterFrom = firstRow - std::min(firstRow, rowsBefore);
-            filtered.resize((endRow - filterFrom) * filteredRowBytes);
-            const uint8_t* previous = filterFrom == 0
-                                          ? scratch.zeroRow.data()
-                                          : rowAt(filterFrom - 1, scratch.rows[0].data());
-            int next =
-                1;  // the scratch row the source may write next; previous may be in the other
-            for (size_t y = filterFrom; y < endRow; ++y) {
-                const uint8_t* row = rowAt(y, scratch.rows[next].data());
-                // A scanline: the filter byte, then the row's bytes filtered.
-                uint8_t* scanline = filtered.data() + (y - filterFrom) * filteredRowBytes;
-                scanline[0] = kPaethFilter;
-                filterPaethRow(row, previous, rowBytes, bytesPerPixel, scanline + 1);
-                previous = row;
-                next ^= 1;
-            }
-            const uint8_t* own = filtered.data() + (firstRow - filterFrom) * filteredRowBytes;
-            const size_t ownBytes = (endRow - firstRow) * filteredRowBytes;
-            pieceAdler[piece] = adler32Update(1, own, ownBytes);
-
-            // Deflated into the thread's room, then kept at its size.
-            const int before = own > filtered.data() ? own[-1] : -1;
-            scratch.deflated.resize(std::max(scratch.deflated.size(), deflateRunsBound(ownBytes)));
-            const size_t written = deflateRuns(own, ownBytes, before, piece + 1 == pieces.count,
-                                               scratch.deflated.data());
-            std::vector<uint8_t>& out = compressed[piece];
-            if (piece == 0) out.assign(kZlibHeader, kZlibHeader + sizeof kZlibHeader);
-            out.insert(out.end(), scratch.deflated.begin(),
-                       scratch.deflated.begin() + std::ptrdiff_t(written));
-            if (piece + 1 < pieces.count && out.size() <= kMaxChunkData)
-                pieceCrc[piece] = chunkCrc("IDAT", out.data(), out.size());
-        }
+        PieceScratch& scratch = scratches[size_t(thread)];
+        scratch.zeroRow.assign(rows.rowBytes, 0);
+        scratch.rows[0].resize(rows.rowBytes);
+        scratch.rows[1].resize(rows.rowBytes);
+        for (size_t piece = size_t(begin); piece < size_t(end); ++piece)
+            encodePiece(rows, pieces, rowAt, piece, scratch, encoded);
     });
-    uLong adler = adler32_z(0, nullptr, 0);
-    for (size_t piece = 0; piece < pieces.count; ++piece) {
-        const size_t rows = pieces.endRow(piece, height) - pieces.firstRow(piece);
-        adler = adler32_combine(adler, pieceAdler[piece], z_off_t(rows * filteredRowBytes));
-    }
-    uint8_t checksum[4];
-    putU32(checksum, uint32_t(adler));
-    compressed.back().insert(compressed.back().end(), checksum, checksum + sizeof checksum);
-
-    size_t total = sizeof kPngSignature + 25 + 12;  // signature, IHDR, IEND
-    for (const std::vector<uint8_t>& piece : compressed)
-        total += piece.size() + 12 * (1 + piece.size() / kMaxChunkData);
-    std::vector<uint8_t> png;
-    png.reserve(total);
-    png.assign(kPngSignature, kPngSignature + sizeof kPngSignature);
-    uint8_t header[13];
-    putU32(header, uint32_t(format.width));
-    putU32(header + 4, uint32_t(format.height));
-    header[8] = uint8_t(format.bitDepth);
-    header[9] = uint8_t(format.colorType);
-    header[10] = 0;  // compression: deflate
-    header[11] = 0;  // filter method: the five adaptive filters
-    header[12] = 0;  // not interlaced
-    appendChunk(png, "IHDR", header, sizeof header);
-    for (size_t p = 0; p < pieces.count; ++p) {
-        const std::vector<uint8_t>& piece = compressed[p];
-        if (pieceCrc[p]) {
-            appendChunk(png, "IDAT", piece.data(), piece.size(), pieceCrc[p]);
-            continue;
-        }
-        for (size_t offset = 0; offset < piece.size(); offset += kMaxChunkData)
-            appendChunk(png, "IDAT", piece.data() + offset,
-                        std::min(kMaxChunkData, piece.size() - offset));
-    }
-    appendChunk(png, "IEND", nullptr, 0);
-    return png;
+    appendChecksum(rows, pieces, encoded);
+    return assemblePng(format, encoded);
 }
 
 }  // namespace quaternia

@@ -43,6 +43,254 @@ struct alignas(64) ThreadTotals {
     std::vector<Rgba> row;  // a tile's row on its way to RenderResult::samples
 };
 
+// Where render.alpha is "opaque" and the caller asked for samples: the rows go straight to PNG
+// samples (RenderOptions::opaqueSamples) instead of the float image.
+bool rendersSamples(const RenderSettings& settings, const RenderOptions& options) {
+    return options.opaqueSamples && settings.alpha == AlphaMode::Opaque;
+}
+
+// The result with its image (or samples) and depth pass allocated, nothing rendered yet.
+RenderResult emptyResult(const RenderSettings& settings, const RenderOptions& options) {
+    RenderResult result;
+    if (rendersSamples(settings, options)) {
+        result.samplesFormat = {settings.width, settings.height, settings.bitDepth,
+                                PngColorType::Rgb};
+        result.samples.resize(pngRowBytes(result.samplesFormat) * size_t(settings.height));
+    } else {
+        result.image = Image(settings.width, settings.height);
+    }
+    if (options.depth) result.depth = GrayImage(settings.width, settings.height);
+    return result;
+}
+
+// Where a tile's row of display values is written, and what becomes of it once written: rows of
+// the float image, or a thread's row quantised into the PNG samples.
+class RowTarget {
+  public:
+    RowTarget(RenderResult& result, bool toSamples) : result_(result), toSamples_(toSamples) {
+        if (!toSamples) return;
+        sampleRowBytes_ = pngRowBytes(result.samplesFormat);
+        samplePixelBytes_ = sampleRowBytes_ / size_t(result.samplesFormat.width);
+    }
+    Rgba* row(ThreadTotals& thread, const Tile& tile, int py) const {
+        if (!toSamples_) return &result_.image.at(tile.x0, py);
+        thread.row.resize(size_t(tile.x1 - tile.x0));
+        return thread.row.data();
+    }
+    void done(const Tile& tile, int py, const Rgba* row) const {
+        if (!toSamples_) return;
+        quantisePngSamples(&row->r, size_t(tile.x1 - tile.x0), result_.samplesFormat.bitDepth,
+                           false,
+                           result_.samples.data() + size_t(py) * sampleRowBytes_ +
+                               size_t(tile.x0) * samplePixelBytes_);
+    }
+
+  private:
+    RenderResult& result_;
+    bool toSamples_;
+    size_t sampleRowBytes_ = 0, samplePixelBytes_ = 0;
+};
+
+// The work of a packet tile, as render statistics (its hits are counted as its pixels finish).
+RenderStats statsOf(const PacketTileStats& tile, int64_t rays) {
+    RenderStats stats;
+    stats.rays = rays;
+    stats.marchSteps = tile.marchSteps;
+    stats.iterations = tile.camera.laneIterations;
+    stats.shadingEstimates = tile.shading.estimates;
+    stats.laneIterations = tile.camera.laneIterations + tile.shading.laneIterations;
+    stats.laneSlots = tile.camera.laneSlots + tile.shading.laneSlots;
+    return stats;
+}
+
+// One frame of a scene: what every tile shares, and the steps that render a tile on either path
+// into the result.
+class FrameRenderer {
+  public:
+    FrameRenderer(const Scene& scene, const RenderOptions& options, RenderResult& result);
+    // The SIMD target's name, or "scalar".
+    const char* engine() const { return lanes_ ? laneTargetName() : "scalar"; }
+    void renderTile(const Tile& tile, ThreadTotals& thread) const {
+        if (lanes_) {
+            renderTilePackets(tile, thread);
+        } else {
+            renderTileScalar(tile, thread);
+        }
+    }
+
+  private:
+    Rgba finishPixel(int px, int py, const PixelSamples& pixel, const Color& background) const;
+    Rgba renderPixel(int px, int py, RenderStats& stats) const;
+    void renderTileScalar(const Tile& tile, ThreadTotals& thread) const;
+    void renderTilePackets(const Tile& tile, ThreadTotals& thread) const;
+    void finishRowsOnUniformBackground(const Tile& tile, ThreadTotals& thread) const;
+    void finishRowsOnBackgroundRows(const Tile& tile, ThreadTotals& thread) const;
+
+    const Fractal fractal_;
+    const Camera camera_;
+    const Shader shader_;
+    const MarchSettings march_;
+    const int samples_;
+    const bool opaque_;  // render.alpha = "opaque"
+    const bool depth_;   // RenderOptions::depth
+    const double depthNear_, depthRange_;
+    // The SIMD path where the formula and marcher allow it (march_lanes.h).
+    std::optional<LaneFractal> lanes_;
+    // A background of one colour (its top and bottom alike), in float as backgroundRow gives it
+    // to finishPixel, and that colour display-encoded as the rows' encoding would.
+    bool uniformBackground_;
+    Color backgroundColor_;
+    Rgba backgroundDisplay_;
+    RenderResult& result_;
+    RowTarget rows_;
+};
+
+FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, RenderResult& result)
+    : fractal_(Fractal::fromScene(scene)),
+      camera_(scene.camera, scene.render.width, scene.render.height),
+      shader_(scene.shading, fractal_),
+      march_{scene.render.method,         scene.render.step,     scene.render.epsilon,
+             camera_.pixelFootprint(1.0), scene.render.maxSteps, scene.render.relaxation},
+      samples_(scene.render.samples),
+      opaque_(scene.render.alpha == AlphaMode::Opaque),
+      depth_(options.depth),
+      depthNear_(std::max(0.0, length(scene.camera.position) - fractal_.boundingRadius())),
+      depthRange_(length(scene.camera.position) + fractal_.boundingRadius() - depthNear_),
+      uniformBackground_(scene.shading.backgroundTop == scene.shading.backgroundBottom),
+      backgroundColor_(float(scene.shading.backgroundBottom.x),
+                       float(scene.shading.backgroundBottom.y),
+                       float(scene.shading.backgroundBottom.z)),
+      backgroundDisplay_{float(backgroundColor_.x), float(backgroundColor_.y),
+                         float(backgroundColor_.z), opaque_ ? 1.0f : 0.0f},
+      result_(result),
+      rows_(result, rendersSamples(scene.render, options)) {
+    if (scene.render.engine == RenderEngine::Simd &&
+        scene.render.method == MarchMethod::SphereTracing)
+        lanes_ = LaneFractal::from(fractal_, scene.render.precision);
+    shader_.toDisplay(&backgroundDisplay_, 1);
+}
+
+// A pixel's samples to its linear colour and alpha (and its depth): the same for both paths.
+// The background (seen through the pixel centre) is read only where some sample missed.
+Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
+                                const Color& background) const {
+    const int hits = pixel.hits;
+    double coverage = double(hits) / samples_;
+    Color color;
+    if (hits == samples_) {
+        color = pixel.sum / double(samples_);
+    } else if (opaque_) {
+        color = pixel.sum / double(samples_) + background * (1 - coverage);
+    } else {
+        color = hits > 0 ? pixel.sum / double(hits) : background;
+    }
+    if (opaque_) coverage = 1;
+    if (depth_) {
+        double depth = hits > 0 ? (pixel.depthSum / hits - depthNear_) / depthRange_ : 1;
+        result_.depth.at(px, py) = float(std::clamp(depth, 0.0, 1.0));
+    }
+    return Rgba{float(color.x), float(color.y), float(color.z), float(coverage)};
+}
+
+// The scalar path: each sample of the pixel marched and shaded on its own.
+Rgba FrameRenderer::renderPixel(int px, int py, RenderStats& stats) const {
+    PixelSamples pixel;
+    ShadingStats shading;
+    for (int k = 0; k < samples_; ++k) {
+        auto [sx, sy] = samplePosition(k, samples_, px, py);
+        Ray ray = camera_.generateRay(px + sx, py + sy);
+        MarchResult marched = march(fractal_, ray, march_);
+        stats.marchSteps += marched.steps;
+        stats.iterations += marched.iterations;
+        if (!marched.hit) continue;
+        ++pixel.hits;
+        pixel.sum +=
+            shader_.shade(*marched.hit, ray, camera_.pixelFootprint(marched.hit->t), shading);
+        pixel.depthSum += marched.hit->t;
+    }
+    stats.shadingEstimates += shading.estimates;
+    stats.rays += samples_;
+    stats.hits += pixel.hits;
+    const Color background = pixel.hits < samples_
+                                 ? shader_.background(camera_.generateRay(px + 0.5, py + 0.5))
+                                 : Color();
+    Rgba linear = finishPixel(px, py, pixel, background);
+    Color display = shader_.toDisplay(Color(linear.r, linear.g, linear.b));
+    return Rgba{float(display.x), float(display.y), float(display.z), linear.a};
+}
+
+void FrameRenderer::renderTileScalar(const Tile& tile, ThreadTotals& thread) const {
+    for (int py = tile.y0; py < tile.y1; ++py) {
+        Rgba* row = rows_.row(thread, tile, py);
+        for (int px = tile.x0; px < tile.x1; ++px)
+            row[px - tile.x0] = renderPixel(px, py, thread.stats);
+        rows_.done(tile, py, row);
+    }
+}
+
+// The SIMD path: the tile's samples summed per pixel by the thread's PacketTileRenderer, then
+// the pixels finished row by row.
+void FrameRenderer::renderTilePackets(const Tile& tile, ThreadTotals& thread) const {
+    if (!thread.packets) {
+        thread.packets =
+            std::make_unique<PacketTileRenderer>(*lanes_, camera_, shader_, march_, samples_);
+    }
+    PacketTileStats tileStats;
+    thread.packets->render(tile, thread.pixels, tileStats);
+    thread.stats += statsOf(tileStats, int64_t(samples_) * int64_t(thread.pixels.size()));
+    if (uniformBackground_) {
+        finishRowsOnUniformBackground(tile, thread);
+    } else {
+        finishRowsOnBackgroundRows(tile, thread);
+    }
+}
+
+// One colour, encoded once: the pixels without hits take it as they are, and only the runs of
+// pixels with hits are finished and encoded.
+void FrameRenderer::finishRowsOnUniformBackground(const Tile& tile, ThreadTotals& thread) const {
+    const int width = tile.x1 - tile.x0;
+    const PixelSamples* pixel = thread.pixels.data();
+    for (int py = tile.y0; py < tile.y1; ++py) {
+        Rgba* row = rows_.row(thread, tile, py);
+        for (int i = 0; i < width;) {
+            if (pixel[i].hits == 0) {
+                if (depth_) finishPixel(tile.x0 + i, py, pixel[i], backgroundColor_);
+                row[i++] = backgroundDisplay_;
+                continue;
+            }
+            const int first = i;
+            for (; i < width && pixel[i].hits > 0; ++i) {
+                thread.stats.hits += pixel[i].hits;
+                row[i] = finishPixel(tile.x0 + i, py, pixel[i], backgroundColor_);
+            }
+            shader_.toDisplay(row + first, size_t(i - first));
+        }
+        rows_.done(tile, py, row);
+        pixel += width;
+    }
+}
+
+// Each row of the tile: the background first (float, vectorised), which is what a pixel without
+// hits shows, then the pixels with hits, then display encoding (SIMD) in place.
+void FrameRenderer::finishRowsOnBackgroundRows(const Tile& tile, ThreadTotals& thread) const {
+    const int width = tile.x1 - tile.x0;
+    const PixelSamples* pixel = thread.pixels.data();
+    for (int py = tile.y0; py < tile.y1; ++py) {
+        Rgba* row = rows_.row(thread, tile, py);
+        const Camera::RowDirections directions = camera_.rowDirections(py);
+        shader_.backgroundRow(directions.first, directions.step, tile.x0, width,
+                              opaque_ ? 1.0f : 0.0f, row);
+        for (int i = 0; i < width; ++i, ++pixel) {
+            if (pixel->hits == 0 && !depth_) continue;
+            thread.stats.hits += pixel->hits;
+            row[i] = finishPixel(tile.x0 + i, py, *pixel, Color(row[i].r, row[i].g, row[i].b));
+        }
+        // Rgba is four floats: the row's colour channels encode in place, alpha kept.
+        shader_.toDisplay(row, size_t(width));
+        rows_.done(tile, py, row);
+    }
+}
+
 }  // namespace
 
 std::array<double, 2> samplePosition(int k, int n, int px, int py) {
@@ -75,198 +323,22 @@ ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int 
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     validateScene(scene);
-    const Fractal fractal = Fractal::fromScene(scene);
     const RenderSettings& settings = scene.render;
-    const Camera camera(scene.camera, settings.width, settings.height);
-    const Shader shader(scene.shading, fractal);
-    const MarchSettings marchSettings{settings.method,   settings.step,
-                                      settings.epsilon,  camera.pixelFootprint(1.0),
-                                      settings.maxSteps, settings.relaxation};
-    const double cameraDistance = length(scene.camera.position);
-    const double depthNear = std::max(0.0, cameraDistance - fractal.boundingRadius());
-    const double depthRange = cameraDistance + fractal.boundingRadius() - depthNear;
-
-    RenderResult result;
-    // The rows go to the float image, or straight to PNG samples (RenderOptions::opaqueSamples).
-    const bool toSamples = options.opaqueSamples && settings.alpha == AlphaMode::Opaque;
-    size_t sampleRowBytes = 0, samplePixelBytes = 0;
-    if (toSamples) {
-        result.samplesFormat = {settings.width, settings.height, settings.bitDepth,
-                                PngColorType::Rgb};
-        sampleRowBytes = pngRowBytes(result.samplesFormat);
-        samplePixelBytes = sampleRowBytes / size_t(settings.width);
-        result.samples.resize(sampleRowBytes * size_t(settings.height));
-    } else {
-        result.image = Image(settings.width, settings.height);
-    }
-    if (options.depth) result.depth = GrayImage(settings.width, settings.height);
-    // Where a tile's row of display values is written, and what becomes of it once written.
-    auto rowOf = [&](ThreadTotals& thread, const Tile& tile, int py) {
-        if (!toSamples) return &result.image.at(tile.x0, py);
-        thread.row.resize(size_t(tile.x1 - tile.x0));
-        return thread.row.data();
-    };
-    auto rowDone = [&](const Tile& tile, int py, const Rgba* row) {
-        if (!toSamples) return;
-        quantisePngSamples(&row->r, size_t(tile.x1 - tile.x0), settings.bitDepth, false,
-                           result.samples.data() + size_t(py) * sampleRowBytes +
-                               size_t(tile.x0) * samplePixelBytes);
-    };
-
+    RenderResult result = emptyResult(settings, options);
+    const FrameRenderer frame(scene, options, result);
+    result.stats.engine = frame.engine();
     const ParallelOptions parallel = imageParallelOptions(options, settings.width, settings.height);
     std::vector<ThreadTotals> totals(parallel.threads);
-    const int samples = settings.samples;
-
-    // The SIMD path where the formula and marcher allow it (march_lanes.h).
-    std::optional<LaneFractal> lanes;
-    if (settings.engine == RenderEngine::Simd && settings.method == MarchMethod::SphereTracing)
-        lanes = LaneFractal::from(fractal, settings.precision);
-    result.stats.engine = lanes ? laneTargetName() : "scalar";
-
-    // A pixel's samples to its linear colour and alpha (and its depth): the same for both paths.
-    // The background (seen through the pixel centre) is read only where some sample missed.
-    const bool opaque = settings.alpha == AlphaMode::Opaque;
-    auto finishPixel = [&](int px, int py, const PixelSamples& samplesOfPixel,
-                           const Color& background) {
-        const int hits = samplesOfPixel.hits;
-        double coverage = double(hits) / samples;
-        Color color;
-        if (hits == samples) {
-            color = samplesOfPixel.sum / double(samples);
-        } else if (opaque) {
-            color = samplesOfPixel.sum / double(samples) + background * (1 - coverage);
-        } else {
-            color = hits > 0 ? samplesOfPixel.sum / double(hits) : background;
-        }
-        if (opaque) coverage = 1;
-        if (options.depth) {
-            double depth = hits > 0 ? (samplesOfPixel.depthSum / hits - depthNear) / depthRange : 1;
-            result.depth.at(px, py) = float(std::clamp(depth, 0.0, 1.0));
-        }
-        return Rgba{float(color.x), float(color.y), float(color.z), float(coverage)};
-    };
-
-    auto renderPixel = [&](int px, int py, RenderStats& stats) -> Rgba {
-        PixelSamples pixel;
-        ShadingStats shading;
-        for (int k = 0; k < samples; ++k) {
-            auto [sx, sy] = samplePosition(k, samples, px, py);
-            Ray ray = camera.generateRay(px + sx, py + sy);
-            MarchResult marched = march(fractal, ray, marchSettings);
-            stats.marchSteps += marched.steps;
-            stats.iterations += marched.iterations;
-            if (!marched.hit) continue;
-            ++pixel.hits;
-            pixel.sum +=
-                shader.shade(*marched.hit, ray, camera.pixelFootprint(marched.hit->t), shading);
-            pixel.depthSum += marched.hit->t;
-        }
-        stats.shadingEstimates += shading.estimates;
-        stats.rays += samples;
-        stats.hits += pixel.hits;
-        const Color background = pixel.hits < samples
-                                     ? shader.background(camera.generateRay(px + 0.5, py + 0.5))
-                                     : Color();
-        Rgba linear = finishPixel(px, py, pixel, background);
-        Color display = shader.toDisplay(Color(linear.r, linear.g, linear.b));
-        return Rgba{float(display.x), float(display.y), float(display.z), linear.a};
-    };
-
-    // A background of one colour (its top and bottom alike), and that colour display-encoded
-    // as the rows' encoding would.
-    const bool uniformBackground = scene.shading.backgroundTop == scene.shading.backgroundBottom;
-    // (In float, as backgroundRow gives it to finishPixel.)
-    const Color backgroundColor(float(scene.shading.backgroundBottom.x),
-                                float(scene.shading.backgroundBottom.y),
-                                float(scene.shading.backgroundBottom.z));
-    Rgba backgroundDisplay{float(backgroundColor.x), float(backgroundColor.y),
-                           float(backgroundColor.z), opaque ? 1.0f : 0.0f};
-    shader.toDisplay(&backgroundDisplay, 1);
-
-    auto renderTilePackets = [&](const Tile& tile, ThreadTotals& thread) {
-        if (!thread.packets) {
-            thread.packets = std::make_unique<PacketTileRenderer>(*lanes, camera, shader,
-                                                                  marchSettings, samples);
-        }
-        PacketTileStats tileStats;
-        thread.packets->render(tile, thread.pixels, tileStats);
-        RenderStats& stats = thread.stats;
-        stats.marchSteps += tileStats.marchSteps;
-        stats.iterations += tileStats.camera.laneIterations;
-        stats.shadingEstimates += tileStats.shading.estimates;
-        stats.laneIterations += tileStats.camera.laneIterations + tileStats.shading.laneIterations;
-        stats.laneSlots += tileStats.camera.laneSlots + tileStats.shading.laneSlots;
-        stats.rays += int64_t(samples) * int64_t(thread.pixels.size());
-        const int width = tile.x1 - tile.x0;
-        const PixelSamples* pixel = thread.pixels.data();
-        if (uniformBackground) {
-            // One colour, encoded once: the pixels without hits take it as they are, and only
-            // the runs of pixels with hits are finished and encoded.
-            for (int py = tile.y0; py < tile.y1; ++py) {
-                Rgba* row = rowOf(thread, tile, py);
-                for (int i = 0; i < width;) {
-                    if (pixel[i].hits == 0) {
-                        if (options.depth) finishPixel(tile.x0 + i, py, pixel[i], backgroundColor);
-                        row[i++] = backgroundDisplay;
-                        continue;
-                    }
-                    const int first = i;
-                    for (; i < width && pixel[i].hits > 0; ++i) {
-                        stats.hits += pixel[i].hits;
-                        row[i] = finishPixel(tile.x0 + i, py, pixel[i], backgroundColor);
-                    }
-                    shader.toDisplay(row + first, size_t(i - first));
-                }
-                rowDone(tile, py, row);
-                pixel += width;
-            }
-            return;
-        }
-        // Each row of the tile: the background first (float, vectorised), which is what a pixel
-        // without hits shows, then the pixels with hits, then display encoding (SIMD) in place.
-        for (int py = tile.y0; py < tile.y1; ++py) {
-            Rgba* row = rowOf(thread, tile, py);
-            const Camera::RowDirections directions = camera.rowDirections(py);
-            shader.backgroundRow(directions.first, directions.step, tile.x0, width,
-                                 opaque ? 1.0f : 0.0f, row);
-            for (int i = 0; i < width; ++i, ++pixel) {
-                if (pixel->hits == 0 && !options.depth) continue;
-                stats.hits += pixel->hits;
-                row[i] = finishPixel(tile.x0 + i, py, *pixel, Color(row[i].r, row[i].g, row[i].b));
-            }
-            // Rgba is four floats: the row's colour channels encode in place, alpha kept.
-            shader.toDisplay(row, size_t(width));
-            rowDone(tile, py, row);
-        }
-    };
 
     auto start = std::chrono::steady_clock::now();
     result.completed = parallelForTiles(
-        settings.width, settings.height, parallel, [&](const Tile& tile, int threadIndex) {
-            ThreadTotals& thread = totals[threadIndex];
-            if (lanes) {
-                renderTilePackets(tile, thread);
-                return;
-            }
-            for (int py = tile.y0; py < tile.y1; ++py) {
-                Rgba* row = rowOf(thread, tile, py);
-                for (int px = tile.x0; px < tile.x1; ++px)
-                    row[px - tile.x0] = renderPixel(px, py, thread.stats);
-                rowDone(tile, py, row);
-            }
-        });
+        settings.width, settings.height, parallel,
+        [&](const Tile& tile, int threadIndex) { frame.renderTile(tile, totals[threadIndex]); });
     result.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.stats.threads = parallel.threads;
-    for (const ThreadTotals& t : totals) {
-        result.stats.rays += t.stats.rays;
-        result.stats.hits += t.stats.hits;
-        result.stats.marchSteps += t.stats.marchSteps;
-        result.stats.iterations += t.stats.iterations;
-        result.stats.shadingEstimates += t.stats.shadingEstimates;
-        result.stats.laneIterations += t.stats.laneIterations;
-        result.stats.laneSlots += t.stats.laneSlots;
-    }
+    for (const ThreadTotals& t : totals)
+        result.stats += t.stats;
     return result;
 }
 

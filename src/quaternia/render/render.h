@@ -35,6 +35,19 @@ struct RenderStats {
     const char* engine = "";  // the SIMD target (e.g. "AVX2") or "scalar"
     int threads = 0;
     double seconds = 0;
+
+    // Adds the counters above (rays to laneSlots) of other work; engine, threads and seconds
+    // describe the whole render and are left as they are.
+    RenderStats& operator+=(const RenderStats& other) {
+        rays += other.rays;
+        hits += other.hits;
+        marchSteps += other.marchSteps;
+        iterations += other.iterations;
+        shadingEstimates += other.shadingEstimates;
+        laneIterations += other.laneIterations;
+        laneSlots += other.laneSlots;
+        return *this;
+    }
 };
 
 struct RenderResult {

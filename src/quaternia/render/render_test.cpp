@@ -131,6 +131,48 @@ TEST(Render, SameImageWithAnyThreadCount) {
     }
 }
 
+// The counters of work add up; the description of the whole render stays.
+TEST(Render, StatsAddTheirCounters) {
+    RenderStats total{1, 2, 3, 4, 5, 6, 7, "AVX2", 8, 0.5};
+    total += RenderStats{10, 20, 30, 40, 50, 60, 70, "scalar", 80, 9.0};
+    EXPECT_EQ(total.rays, 11);
+    EXPECT_EQ(total.hits, 22);
+    EXPECT_EQ(total.marchSteps, 33);
+    EXPECT_EQ(total.iterations, 44);
+    EXPECT_EQ(total.shadingEstimates, 55);
+    EXPECT_EQ(total.laneIterations, 66);
+    EXPECT_EQ(total.laneSlots, 77);
+    EXPECT_STREQ(total.engine, "AVX2");
+    EXPECT_EQ(total.threads, 8);
+    EXPECT_EQ(total.seconds, 0.5);
+}
+
+// Each thread counts its own tiles: the sums are the same for any number of threads, on both
+// engines.
+TEST(Render, StatsDoNotDependOnTheThreads) {
+    Scene scene = referenceScene("case01_sqr_A");
+    scene.render.width = 64;
+    scene.render.height = 48;
+    for (RenderEngine engine : {RenderEngine::Scalar, RenderEngine::Simd}) {
+        scene.render.engine = engine;
+        RenderOptions one, three;
+        one.threads = 1;
+        three.threads = 3;
+        const RenderStats a = render(scene, one).stats, b = render(scene, three).stats;
+        EXPECT_EQ(a.rays, 64 * 48);
+        EXPECT_GT(a.hits, 0);
+        EXPECT_GT(a.marchSteps, a.rays);
+        EXPECT_GT(a.shadingEstimates, 0);
+        EXPECT_EQ(a.hits, b.hits);
+        EXPECT_EQ(a.marchSteps, b.marchSteps);
+        EXPECT_EQ(a.iterations, b.iterations);
+        EXPECT_EQ(a.shadingEstimates, b.shadingEstimates);
+        EXPECT_EQ(a.laneIterations, b.laneIterations);
+        EXPECT_EQ(a.laneSlots, b.laneSlots);
+        EXPECT_EQ(a.laneSlots > 0, engine == RenderEngine::Simd);
+    }
+}
+
 // Opaque frames rendered straight to PNG samples (RenderOptions::opaqueSamples) encode to the
 // very bytes of the float image's PNG, on both engines, at both bit depths, with a background of
 // one colour and a gradient; frames with coverage alpha still come as the image.
