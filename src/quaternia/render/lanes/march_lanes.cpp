@@ -16,6 +16,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "quaternia/algebra/quaternion.h"
+
 #include "quaternia/render/lanes/lane_state.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/lanes/march_rules.h"
@@ -25,6 +27,11 @@ namespace quaternia {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// QuaternionT's ring operations for this target's vectors (quaternion.h says why they are
+// included here again).
+template <class V>
+concept QuaternionComponent = !std::is_arithmetic_v<V>;
+#include "quaternia/algebra/quaternion_arithmetic-inl.h"
 #include "quaternia/fractal/julia_steps-inl.h"
 // After the formulas it uses:
 #include "quaternia/render/lanes/estimate_lanes-inl.h"
@@ -274,10 +281,10 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
         const auto x = hn::Load(d, in.a), y = hn::Load(d, in.b), z = hn::Load(d, in.c);
         LaneEstimate<D> estimates[1];
         if (kQuadratic && k.threeNumbers) {
-            const QuaternionLanes<hn::Vec<D>> u[1] = {k.loopFromWorld(x, y, z)};
+            const QuaternionT<hn::Vec<D>> u[1] = {k.loopFromWorld(x, y, z)};
             estimateThreeNumbers<kOrbit>(d, k, u, live, estimates, counters);
         } else {
-            QuaternionLanes<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
+            QuaternionT<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
             estimateLanes<kQuadratic, kOrbit>(d, k, q, live, estimates, counters);
         }
         const LaneEstimate<D>& e = estimates[0];
