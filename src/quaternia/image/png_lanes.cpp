@@ -1,5 +1,5 @@
-// SIMD kernels of png_kernels.h, compiled once per instruction set by Highway's foreach_target
-// and chosen at run time (HWY_DYNAMIC_DISPATCH), as shading_kernels.cpp.
+// The SIMD lanes of png_lanes.h, compiled once per instruction set by Highway's foreach_target
+// and chosen at run time (HWY_DYNAMIC_DISPATCH), as shading_lanes.cpp.
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "quaternia/image/png_lanes.cpp"

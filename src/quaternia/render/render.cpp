@@ -38,7 +38,7 @@ double unitFromHash(uint32_t h) {
 // Each thread's counters and scratch on their own cache lines, so that threads do not contend.
 struct alignas(64) ThreadTotals {
     RenderStats stats;
-    std::unique_ptr<PacketTileRenderer> packets;  // the SIMD path's batches
+    std::unique_ptr<LaneTileRenderer> laneTiles;  // the SIMD path's batches
     std::vector<PixelSamples> pixels;
     std::vector<Rgba> row;  // a tile's row on its way to RenderResult::samples
 };
@@ -117,7 +117,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     std::vector<ThreadTotals> totals(parallel.threads);
     const int samples = settings.samples;
 
-    // The SIMD path where the formula and marcher allow it (packet_kernels.h).
+    // The SIMD path where the formula and marcher allow it (march_lanes.h).
     std::optional<LaneFractal> lanes;
     if (settings.engine == RenderEngine::Simd && settings.method == MarchMethod::SphereTracing)
         lanes = LaneFractal::from(fractal, settings.precision);
@@ -183,13 +183,13 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
                            float(backgroundColor.z), opaque ? 1.0f : 0.0f};
     shader.toDisplay(&backgroundDisplay, 1);
 
-    auto renderTilePackets = [&](const Tile& tile, ThreadTotals& thread) {
-        if (!thread.packets) {
-            thread.packets = std::make_unique<PacketTileRenderer>(*lanes, camera, shader,
-                                                                  marchSettings, samples);
+    auto renderTileInLanes = [&](const Tile& tile, ThreadTotals& thread) {
+        if (!thread.laneTiles) {
+            thread.laneTiles =
+                std::make_unique<LaneTileRenderer>(*lanes, camera, shader, marchSettings, samples);
         }
-        PacketTileStats tileStats;
-        thread.packets->render(tile, thread.pixels, tileStats);
+        LaneTileStats tileStats;
+        thread.laneTiles->render(tile, thread.pixels, tileStats);
         RenderStats& stats = thread.stats;
         stats.marchSteps += tileStats.marchSteps;
         stats.iterations += tileStats.camera.laneIterations;
@@ -245,7 +245,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         settings.width, settings.height, parallel, [&](const Tile& tile, int threadIndex) {
             ThreadTotals& thread = totals[threadIndex];
             if (lanes) {
-                renderTilePackets(tile, thread);
+                renderTileInLanes(tile, thread);
                 return;
             }
             for (int py = tile.y0; py < tile.y1; ++py) {

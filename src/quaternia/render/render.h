@@ -67,7 +67,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options = {});
 // frames 2.6% faster than 32); small images need the small tiles to keep every thread busy, and
 // kMinimumHugeTiles still gives 64 cores about 8 tiles each. The size depends on the image
 // alone, so the picture is the same for any number of threads (it is the same for any of these
-// sizes too: they are multiples of the cone blocks, render_packets.h).
+// sizes too: they are multiples of the cone blocks, lane_tile_renderer.h).
 inline constexpr int64_t kMinimumLargeTiles = 128;
 inline constexpr int64_t kMinimumHugeTiles = 480;
 ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int height);

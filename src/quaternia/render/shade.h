@@ -22,7 +22,7 @@ struct ShadingStats {
 };
 
 // What lighting a hit needs beyond its position: the scalar path computes these ray by ray, the
-// SIMD path (render_packets.h) in batches; both light them with Shader::light.
+// SIMD path (lane_tile_renderer.h) in batches; both light them with Shader::light.
 struct SurfaceSample {
     Vector3d normal;  // unit, facing the viewer
     Color albedo;
@@ -94,11 +94,11 @@ class Shader {
     double ambientFromOpenness(double open) const;
     // The lit colour of a surface sample seen along `ray`.
     Color light(const SurfaceSample& sample, const Ray& ray) const;
-    // light()'s constants for its SIMD form (shading_kernels.h, lightSurfaces).
+    // light()'s constants for its SIMD form (shading_lanes.h, lightSurfaces).
     LightConstants lightConstants() const;
     // Exposure, clamp to [0, 1] and gamma: the values written to an 8- or 16-bit image.
     Color toDisplay(const Color& linear) const;
-    // The same for the colours of many pixels in place, alpha kept (SIMD, shading_kernels.h;
+    // The same for the colours of many pixels in place, alpha kept (SIMD, shading_lanes.h;
     // equal to float rounding).
     void toDisplay(Rgba* pixels, size_t count) const;
 

@@ -1,11 +1,11 @@
-// The distance estimate in SIMD lanes, shared by the kernels of packet_kernels.cpp: the
+// The distance estimate in SIMD lanes, shared by the functions of march_lanes.cpp: the
 // fractal's constants as lanes, JuliaSet::estimate for K vectors of points at once
 // (estimateLanes), and the estimates along the rays held in lanes (estimateAlongRays).
 //
-// Like julia_lanes-inl.h, this file has no namespace of its own: packet_kernels.cpp includes it
+// Like julia_steps-inl.h, this file has no namespace of its own: march_lanes.cpp includes it
 // inside its per-target namespace, once per SIMD target (the HWY_TARGET_TOGGLE guard below lets
-// it in again for each), after hwy/highway.h, julia_lanes-inl.h, lane_state.h and
-// packet_kernels.h, with hn naming the target's Highway namespace.
+// it in again for each), after hwy/highway.h, julia_steps-inl.h, lane_state.h and
+// march_lanes.h, with hn naming the target's Highway namespace.
 
 #if defined(QUATERNIA_ESTIMATE_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef QUATERNIA_ESTIMATE_LANES_INL_H_
@@ -135,7 +135,7 @@ HWY_INLINE V fastLogLanes(D d, V x) {
 // 4e-4 on every target) and the logarithm from fastLogLanes: a division, a square root and a
 // longer logarithm less per estimate. (A margin of 1/512 below the exact value, tried to keep
 // the rounding one-sided, moved the lanes' ambient occlusion and soft shadows visibly away from
-// the scalar path's: PacketRender.ShadedImageMatchesTheScalarPath.)
+// the scalar path's: LaneRender.ShadedImageMatchesTheScalarPath.)
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V closingDistance(D d, V radiusSquared, V derivativeSquared, V stepScale) {
     using T = hn::TFromD<D>;
@@ -206,7 +206,7 @@ HWY_INLINE bool settleCertified(D d, V r2, V derivativeSquared, V stopRadius, V 
 // chain); a lane whose estimate is final is marked done and its |z|^2 and |z'|^2 are kept at
 // that iteration, while its z runs on unused (it may overflow; nothing reads it). The loop ends
 // when every lane is done. kOrbit also keeps the orbit trap and the iteration count. (The
-// marching kernels' hot case has its own loop: estimateThreeNumbers.)
+// marchers' hot case has its own loop: estimateThreeNumbers.)
 template <bool kQuadratic, bool kOrbit, size_t K, class D>
 HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionT<hn::Vec<D>> (&z)[K],
                               const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
@@ -404,7 +404,7 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
 // The estimates at the current points of the rays in the lanes (o + t d, through the slice):
 // live lanes, their t, and the estimates. False when no lane holds a ray.
 template <bool kQuadratic, size_t K, class D, class T>
-HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes<T>& s,
+HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes<T>& rayLanes,
                                   hn::Mask<D> (&live)[K], hn::Vec<D> (&t)[K],
                                   LaneEstimate<D> (&e)[K], LaneCounters& counters) {
     const size_t lanes = hn::Lanes(d);
@@ -412,12 +412,12 @@ HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes
     bool anyLive = false;
     for (size_t j = 0; j < K; ++j) {
         const size_t o = j * lanes;
-        live[j] = hn::Load(d, s.live + o) > hn::Zero(d);
+        live[j] = hn::Load(d, rayLanes.live + o) > hn::Zero(d);
         anyLive = anyLive || !hn::AllFalse(d, live[j]);
-        t[j] = hn::Load(d, s.t + o);
-        const auto x = hn::MulAdd(hn::Load(d, s.dx + o), t[j], hn::Load(d, s.ox + o));
-        const auto y = hn::MulAdd(hn::Load(d, s.dy + o), t[j], hn::Load(d, s.oy + o));
-        const auto z = hn::MulAdd(hn::Load(d, s.dz + o), t[j], hn::Load(d, s.oz + o));
+        t[j] = hn::Load(d, rayLanes.t + o);
+        const auto x = hn::MulAdd(hn::Load(d, rayLanes.dx + o), t[j], hn::Load(d, rayLanes.ox + o));
+        const auto y = hn::MulAdd(hn::Load(d, rayLanes.dy + o), t[j], hn::Load(d, rayLanes.oy + o));
+        const auto z = hn::MulAdd(hn::Load(d, rayLanes.dz + o), t[j], hn::Load(d, rayLanes.oz + o));
         q[j] = kQuadratic && k.threeNumbers ? k.loopFromWorld(x, y, z)
                                             : k.quaternionFromWorld(x, y, z);
     }

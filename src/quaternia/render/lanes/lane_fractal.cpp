@@ -1,4 +1,4 @@
-// The plain-C++ side of packet_kernels.h: flattening a Fractal for the lanes, and the batches.
+// The plain-C++ side of march_lanes.h: flattening a Fractal for the lanes, and the batches.
 #include <cmath>
 
 #include "quaternia/render/lanes/march_lanes.h"

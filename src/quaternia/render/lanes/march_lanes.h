@@ -3,7 +3,7 @@
 // dispatch to SSE4, AVX2 or AVX-512, whichever the CPU has). Each lane follows its own ray; a
 // lane whose ray has finished takes the next ray of the batch at once, so lanes stay busy until
 // the batch runs dry. The arithmetic is the scalar reference's (distance.cpp, march.cpp, one
-// formula in julia_lanes-inl.h), in float or double lanes.
+// formula in julia_steps-inl.h), in float or double lanes.
 //
 // Only polynomials of the form s z^d + c take this path (z^2 + c specialised); others use the
 // scalar reference, which is correct for every eq. 2.10 polynomial.
