@@ -1,4 +1,4 @@
-// Benchmarks with stable names: the distance-estimate kernel and whole frames of fixed scenes.
+// Benchmarks with stable names: the distance estimate and whole frames of fixed scenes.
 // Counters explain the speed: rays/s, estimates and iterations per ray.
 #include <benchmark/benchmark.h>
 
@@ -40,7 +40,7 @@ void BM_DistanceEstimate(benchmark::State& state) {
 }
 BENCHMARK(BM_DistanceEstimate);
 
-// The same points through the SIMD kernel (march_lanes.h), 4096 per call; the argument is
+// The same points through the SIMD lanes (march_lanes.h), 4096 per call; the argument is
 // the precision (0 single, 1 double). Lane-iterations/s is the throughput of the hot loop.
 void BM_DistanceEstimateLanes(benchmark::State& state) {
     Scene scene = defaultScene();

@@ -1,13 +1,22 @@
-// Quaternions q = w + x i + y j + z k, templated on the scalar so that the same algebra runs on
-// float and double, as Embree's QuaternionT<T> (the SIMD lanes use fractal/julia_steps-inl.h).
+// Quaternions q = w + x i + y j + z k, templated on the components so that the same algebra runs
+// on float and double and on SIMD lanes (Highway vectors: the render lanes), as Embree's
+// QuaternionT<T>.
 //
 // A default-constructed Quaternion is zero: it is an element of the algebra H, not a rotation.
 // Multiplication is Hamilton's product (Hamilton 1843; seed paper eqs. 2.7-2.9):
 //   i^2 = j^2 = k^2 = ijk = -1,  ij = k, jk = i, ki = j,  ji = -k, kj = -i, ik = -j.
+//
+// The ring operations (sums, products, dot, norm squared, square) are in
+// quaternion_arithmetic-inl.h, which this header includes for real components and the lane code
+// includes again inside each SIMD target's namespace: GCC compiles a template with the target
+// options of the place where it is defined, so an operator defined here could not use AVX2's
+// vector instructions. Everything else here (constructors, the compound assignments, the
+// functions below) is for real components only.
 #pragma once
 
 #include <cmath>
 #include <ostream>
+#include <type_traits>
 
 namespace quaternia {
 
@@ -16,8 +25,11 @@ struct QuaternionT {
     T w{}, x{}, y{}, z{};  // components along 1, i, j, k
 
     constexpr QuaternionT() = default;
-    constexpr QuaternionT(T real) : w(real) {}  // NOLINT: reals embed in H
-    constexpr QuaternionT(T w_, T x_, T y_, T z_) : w(w_), x(x_), y(y_), z(z_) {}
+    // By reference: a lane vector passed by value to a function compiled without its target
+    // changes the ABI (GCC's -Wpsabi note).
+    constexpr QuaternionT(const T& real) : w(real) {}  // NOLINT: reals embed in H
+    constexpr QuaternionT(const T& w_, const T& x_, const T& y_, const T& z_)
+        : w(w_), x(x_), y(y_), z(z_) {}
 
     template <typename U>
     constexpr explicit QuaternionT(const QuaternionT<U>& q)
@@ -47,38 +59,15 @@ struct QuaternionT {
 using Quaternion = QuaternionT<double>;
 using Quaternionf = QuaternionT<float>;
 
+// The components that quaternion_arithmetic-inl.h's operations take in this namespace; the lane
+// code's target namespaces take their vectors instead.
 template <typename T>
-constexpr QuaternionT<T> operator+(QuaternionT<T> a, const QuaternionT<T>& b) {
-    return a += b;
-}
-template <typename T>
-constexpr QuaternionT<T> operator-(QuaternionT<T> a, const QuaternionT<T>& b) {
-    return a -= b;
-}
-template <typename T>
-constexpr QuaternionT<T> operator-(const QuaternionT<T>& a) {
-    return {-a.w, -a.x, -a.y, -a.z};
-}
-template <typename T>
-constexpr QuaternionT<T> operator*(QuaternionT<T> a, T s) {
-    return a *= s;
-}
-template <typename T>
-constexpr QuaternionT<T> operator*(T s, QuaternionT<T> a) {
-    return a *= s;
-}
+concept QuaternionComponent = std::is_arithmetic_v<T>;
+#include "quaternia/algebra/quaternion_arithmetic-inl.h"  // IWYU pragma: export
+
 template <typename T>
 constexpr QuaternionT<T> operator/(QuaternionT<T> a, T s) {
     return a *= T(1) / s;
-}
-
-// Hamilton product: (a0 + va)(b0 + vb) = a0 b0 - va.vb + a0 vb + b0 va + va x vb.
-template <typename T>
-constexpr QuaternionT<T> operator*(const QuaternionT<T>& a, const QuaternionT<T>& b) {
-    return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-            a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-            a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-            a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
 
 template <typename T>
@@ -87,22 +76,9 @@ constexpr bool operator==(const QuaternionT<T>& a, const QuaternionT<T>& b) {
 }
 
 template <typename T>
-constexpr QuaternionT<T> conj(const QuaternionT<T>& q) {
-    return {q.w, -q.x, -q.y, -q.z};
-}
-// |q|^2 = w^2 + x^2 + y^2 + z^2; the norm is multiplicative, |pq| = |p||q|.
-template <typename T>
-constexpr T normSquared(const QuaternionT<T>& q) {
-    return q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
-}
-template <typename T>
 T norm(const QuaternionT<T>& q) {
     using std::sqrt;
     return sqrt(normSquared(q));
-}
-template <typename T>
-constexpr T dot(const QuaternionT<T>& a, const QuaternionT<T>& b) {
-    return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
 }
 // q^-1 = conj(q) / |q|^2. The caller guarantees q != 0.
 template <typename T>
@@ -112,12 +88,6 @@ constexpr QuaternionT<T> inverse(const QuaternionT<T>& q) {
 template <typename T>
 QuaternionT<T> normalize(const QuaternionT<T>& q) {
     return q / norm(q);
-}
-// q^2 = (w^2 - |v|^2) + 2 w v: cheaper than the general product (docs/facts.md, Algebra).
-template <typename T>
-constexpr QuaternionT<T> square(const QuaternionT<T>& q) {
-    T twoW = q.w + q.w;
-    return {q.w * q.w - q.x * q.x - q.y * q.y - q.z * q.z, twoW * q.x, twoW * q.y, twoW * q.z};
 }
 template <typename T>
 constexpr T realPart(const QuaternionT<T>& q) {

@@ -7,16 +7,9 @@
 
 namespace quaternia {
 
-#include "quaternia/fractal/julia_steps-inl.h"  // the iteration formulas, shared with the SIMD kernels
+#include "quaternia/fractal/julia_steps-inl.h"  // the iteration formulas, shared with the lanes
 
 namespace {
-
-QuaternionLanes<double> lanes(const Quaternion& q) {
-    return {q.w, q.x, q.y, q.z};
-}
-Quaternion fromLanes(const QuaternionLanes<double>& q) {
-    return {q.w, q.x, q.y, q.z};
-}
 
 Quaternion power(const Quaternion& z, int degree) {
     Quaternion result = z;
@@ -31,9 +24,7 @@ Quaternion power(const Quaternion& z, int degree) {
 struct QuadraticMap {  // s z^2 + c
     Quaternion c;
     double s;
-    Quaternion operator()(const Quaternion& z) const {
-        return fromLanes(quadraticStepLanes(lanes(z), s, lanes(c)));
-    }
+    Quaternion operator()(const Quaternion& z) const { return quadraticStep(z, s, c); }
     double gainSquared(double r2) const { return 4 * s * s * r2; }
 };
 struct PowerMap {  // s z^d + c
@@ -148,8 +139,7 @@ JuliaSet::JuliaSet(Polynomial polynomial, int maxIterations, double bailout)
 }
 
 Quaternion JuliaSet::derivative(const Quaternion& z, const Quaternion& h) const {
-    if (power_ && power_->degree == 2)
-        return fromLanes(quadraticDerivativeLanes(lanes(z), lanes(h), power_->scale));
+    if (power_ && power_->degree == 2) return quadraticDerivative(z, h, power_->scale);
     return polynomial_.derivative(z, h);
 }
 

@@ -48,7 +48,7 @@ double continuationRadiusSquared(int degree) {
                     std::pow(largest, 1.0 / std::max(1, degree)));
 }
 
-// The highest degree d of s z^d + c that the SIMD kernels take (LaneFractal::from); higher
+// The highest degree d of s z^d + c that the SIMD lanes take (LaneFractal::from); higher
 // degrees use the scalar path.
 inline constexpr int kMaxLaneDegree = 16;
 

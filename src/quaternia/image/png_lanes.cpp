@@ -1,4 +1,4 @@
-// SIMD kernels of png_lanes.h, compiled once per instruction set by Highway's foreach_target
+// The SIMD lanes of png_lanes.h, compiled once per instruction set by Highway's foreach_target
 // and chosen at run time (HWY_DYNAMIC_DISPATCH), as shading_lanes.cpp.
 
 #undef HWY_TARGET_INCLUDE

@@ -1,4 +1,4 @@
-// SIMD kernels of PNG encoding (png_io.cpp, png_writer.cpp): quantising float pixels to samples,
+// SIMD lanes of PNG encoding (png_io.cpp, png_writer.cpp): quantising float pixels to samples,
 // the opacity check, the Paeth filter and the zlib stream's checksum, compiled per instruction set
 // by Highway like shading_lanes.h and chosen at run time. Each gives exactly the bytes of the
 // scalar formula it replaces, which png_lanes_test.cpp keeps as its reference.

@@ -1,4 +1,4 @@
-// The PNG kernels (png_lanes.h) against the scalar formulas they replaced, written out here,
+// The PNG lanes (png_lanes.h) against the scalar formulas they replaced, written out here,
 // on every instruction set compiled in and supported here. Equal means byte for byte: the PNGs
 // must not change.
 #include "quaternia/image/png_lanes.h"
@@ -18,7 +18,7 @@
 namespace quaternia {
 namespace {
 
-// png_io's quantisation before the kernels: clamped to [0, 1] (NaN to 0), rounded in double.
+// png_io's quantisation before the lanes: clamped to [0, 1] (NaN to 0), rounded in double.
 template <uint32_t MaxValue>
 uint32_t quantiseReference(float value) {
     const float clamped = value > 0.0f ? (value < 1.0f ? value : 1.0f) : 0.0f;
@@ -100,7 +100,7 @@ std::vector<float> hardValues() {
 // Quantisation of random and hard values, with and without alpha, at 8 and 16 bits, for pixel
 // counts that are not multiples of any vector length; and the Paeth filter of random rows of
 // every byte value, for each PNG pixel size, with row lengths around the vector lengths.
-TEST(PngKernels, SimdQuantiseAndPaethEqualTheScalarFormulas) {
+TEST(PngLanes, SimdQuantiseAndPaethEqualTheScalarFormulas) {
     std::mt19937 random(7);
     std::uniform_real_distribution<float> wide(-0.5f, 1.5f);
     const std::vector<float> hard = hardValues();
@@ -156,7 +156,7 @@ TEST(PngKernels, SimdQuantiseAndPaethEqualTheScalarFormulas) {
 
 // Every left (a), above (b) and upper left (c) byte: each pixel of four bytes after the first
 // takes a and c from the pixel before it, in whose row and row above they are laid out.
-TEST(PngKernels, PaethPredictsEveryTripleOfBytes) {
+TEST(PngLanes, PaethPredictsEveryTripleOfBytes) {
     std::vector<uint8_t> row, previous;
     for (int a = 0; a < 256; ++a) {
         for (int b = 0; b < 256; ++b) {
@@ -183,7 +183,7 @@ TEST(PngKernels, PaethPredictsEveryTripleOfBytes) {
 
 // The opacity check says yes exactly when every alpha quantises to the largest sample, here
 // with one pixel below it (or NaN) at each place, in runs of pixels of several lengths.
-TEST(PngKernels, OpacityCheckAgreesWithTheQuantisedAlpha) {
+TEST(PngLanes, OpacityCheckAgreesWithTheQuantisedAlpha) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     for (int64_t target : hwy::SupportedAndGeneratedTargets()) {
         hwy::SetSupportedTargetsForTest(target);
@@ -223,7 +223,7 @@ TEST(PngKernels, OpacityCheckAgreesWithTheQuantisedAlpha) {
 
 // The checksum equals zlib's from any starting value, for every length up to a few chunks and
 // for long runs (all 255 being the largest sums), on every target.
-TEST(PngKernels, Adler32EqualsZlibs) {
+TEST(PngLanes, Adler32EqualsZlibs) {
     std::mt19937 random(3);
     std::vector<uint8_t> bytes(1 << 20);
     for (uint8_t& b : bytes)

@@ -8,9 +8,9 @@
 
 namespace quaternia {
 
-PacketTileRenderer::PacketTileRenderer(const LaneFractal& lanes, const Camera& camera,
-                                       const Shader& shader, const MarchSettings& march,
-                                       int samples, bool shadowCylinders)
+LaneTileRenderer::LaneTileRenderer(const LaneFractal& lanes, const Camera& camera,
+                                   const Shader& shader, const MarchSettings& march, int samples,
+                                   bool shadowCylinders)
     : lanes_(lanes),
       camera_(camera),
       shader_(shader),
@@ -21,7 +21,7 @@ PacketTileRenderer::PacketTileRenderer(const LaneFractal& lanes, const Camera& c
       lightConstants_(shader.lightConstants()),
       coneRatio_(coneRatio(camera)) {}
 
-double PacketTileRenderer::coneRatio(const Camera& camera) {
+double LaneTileRenderer::coneRatio(const Camera& camera) {
     // The cone about a block's central ray holds every ray through the block: points at the same
     // t lie within t |d - d_centre| of each other, largest at the block's corners. Through a
     // pinhole, a block subtends the widest angle at the image centre (its angular size falls as
@@ -44,8 +44,8 @@ double PacketTileRenderer::coneRatio(const Camera& camera) {
     return ratio * 1.01 + 1e-12;
 }
 
-void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixels,
-                                PacketTileStats& stats) {
+void LaneTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixels,
+                              LaneTileStats& stats) {
     const int width = tile.x1 - tile.x0;
     tileBlocks_ =
         (width + kConeBlock - 1) / kConeBlock * ((tile.y1 - tile.y0 + kConeBlock - 1) / kConeBlock);
@@ -117,7 +117,7 @@ void PacketTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pix
     }
 }
 
-void PacketTileRenderer::rowRays(const Tile& tile, int py, const double* blockStart) {
+void LaneTileRenderer::rowRays(const Tile& tile, int py, const double* blockStart) {
     // The rays through the pixel centres of the row, as generateRay and intersectSphere give
     // them (the same formulas in the same order), for the pixels of the blocks whose cones did
     // not miss: each run of such blocks in one loop without branches (the square roots and
@@ -154,7 +154,7 @@ void PacketTileRenderer::rowRays(const Tile& tile, int py, const double* blockSt
     }
 }
 
-void PacketTileRenderer::marchCones(const Tile& tile, PacketTileStats& stats) {
+void LaneTileRenderer::marchCones(const Tile& tile, LaneTileStats& stats) {
     const int width = tile.x1 - tile.x0, height = tile.y1 - tile.y0;
     const int across = (width + kConeBlock - 1) / kConeBlock;
     const int down = (height + kConeBlock - 1) / kConeBlock;
@@ -205,7 +205,7 @@ void PacketTileRenderer::marchCones(const Tile& tile, PacketTileStats& stats) {
     }
 }
 
-void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
+void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
     const size_t count = hits_.size();
     // The estimate at each hit's outside point, where the orbit colours the surface: its
     // iteration count is then the M of the analytic normal (JuliaSet::gradientIterations).
@@ -301,7 +301,7 @@ void PacketTileRenderer::shadeHits(PacketTileStats& stats) {
     lightSurfaces(lightConstants_, surfaces_);  // the colours: surfaces_.red, green, blue
 }
 
-void PacketTileRenderer::clipShadowRays(PacketTileStats& stats) {
+void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
     // Hard shadow rays of one block of pixels are parallel (the key light is a direction) and
     // start within a few footprints of each other. A cylinder about them that holds all their
     // origins, marched as a cone of constant radius from the far side of the bounding sphere

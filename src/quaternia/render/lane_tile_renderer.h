@@ -1,6 +1,6 @@
 // The SIMD path of render(): a tile's camera rays marched together in lanes, then its hits
-// shaded in batches (normals, shadow rays, ambient occlusion), each batch one call of the packet
-// kernels (march_lanes.h), and lit together (shading_lanes.h, Shader::light's formula), so
+// shaded in batches (normals, shadow rays, ambient occlusion), each batch one call of the lanes
+// (lanes/march_lanes.h), and lit together (shading_lanes.h, Shader::light's formula), so
 // both paths make the same picture up to the precision of the lanes.
 #pragma once
 
@@ -23,38 +23,38 @@ struct PixelSamples {
 };
 
 // Work of one tile, for RenderStats.
-struct PacketTileStats {
+struct LaneTileStats {
     int64_t marchSteps = 0;
     LaneCounters camera, shading;
 };
 
 // One per thread: owns the batches, so that after the first tiles nothing is allocated.
-class PacketTileRenderer {
+class LaneTileRenderer {
   public:
     // shadowCylinders: hard shadow rays are shortened by a cylinder per block (clipShadowRays),
     // which changes no pixel; false only to check that.
-    PacketTileRenderer(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
-                       const MarchSettings& march, int samples, bool shadowCylinders = true);
+    LaneTileRenderer(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
+                     const MarchSettings& march, int samples, bool shadowCylinders = true);
 
     // Marches and shades every sample of every pixel of the tile; pixels[(y - y0) * width +
     // (x - x0)] receives the sums of pixel (x, y).
-    void render(const Tile& tile, std::vector<PixelSamples>& pixels, PacketTileStats& stats);
+    void render(const Tile& tile, std::vector<PixelSamples>& pixels, LaneTileStats& stats);
 
   private:
     // Cone marching (Amanatides 1984; as in demoscene "cone marching"): one cone per block of
     // kConeBlock^2 pixels marched to where the set may be near, so that the pixels' own rays
     // start there; blockStart_ gets that t, or infinity where the whole block misses.
     static constexpr int kConeBlock = 4;
-    void marchCones(const Tile& tile, PacketTileStats& stats);
+    void marchCones(const Tile& tile, LaneTileStats& stats);
     // One sample per pixel: the rays through the centres of row py of the tile, in rowRays_,
     // for the pixels of the blocks whose start (blockStart_, the row's blocks) is finite.
     void rowRays(const Tile& tile, int py, const double* blockStart);
-    void shadeHits(PacketTileStats& stats);
+    void shadeHits(LaneTileStats& stats);
     // Hard shadows: one cylinder about the shadow rays of each block of kConeBlock^2 pixels
     // with at least kMinCylinderRays of them shortens them to where it stopped, and leaves out
     // of shadowRays_ those it cleared whole (shadowClear_).
     static constexpr size_t kMinCylinderRays = 4;
-    void clipShadowRays(PacketTileStats& stats);
+    void clipShadowRays(LaneTileStats& stats);
 
     LaneFractal lanes_;
     const Camera& camera_;

@@ -28,9 +28,9 @@ Scene silhouetteScene(const std::string& id, RenderEngine engine, Precision prec
     return scene;
 }
 
-class PacketSilhouette : public ::testing::TestWithParam<const char*> {};
+class LaneSilhouette : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(PacketSilhouette, MatchesTheScalarReferenceMarcher) {
+TEST_P(LaneSilhouette, MatchesTheScalarReferenceMarcher) {
     const std::string id = GetParam();
     RenderResult reference = render(silhouetteScene(id, RenderEngine::Scalar, Precision::Double));
     EXPECT_STREQ(reference.stats.engine, "scalar");
@@ -46,7 +46,7 @@ TEST_P(PacketSilhouette, MatchesTheScalarReferenceMarcher) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(ReferenceCases, PacketSilhouette,
+INSTANTIATE_TEST_SUITE_P(ReferenceCases, LaneSilhouette,
                          ::testing::Values("case01_sqr_A", "case03_sqr_C", "case05_sqr_E",
                                            "case06_sqr_A_tilt", "case08_cube_F"));
 
@@ -55,7 +55,7 @@ INSTANTIATE_TEST_SUITE_P(ReferenceCases, PacketSilhouette,
 // another point within a fraction of a footprint of the surface, and the normal of a fractal
 // surface turns fast at that scale. So the images agree in silhouette, in the mean (no bias in
 // light, shadow or colour) and on average per pixel within a few percent.
-TEST(PacketRender, ShadedImageMatchesTheScalarPath) {
+TEST(LaneRender, ShadedImageMatchesTheScalarPath) {
     Scene scene = testing::referenceScene("case01_sqr_A");
     scene.render.width = 320;
     scene.render.height = 240;
@@ -86,10 +86,10 @@ TEST(PacketRender, ShadedImageMatchesTheScalarPath) {
 }
 
 // Hard shadows: the shadow rays of each block are shortened to where a cylinder about them
-// stopped, or left out where it cleared them whole (PacketTileRenderer::clipShadowRays). A
+// stopped, or left out where it cleared them whole (LaneTileRenderer::clipShadowRays). A
 // cylinder only proves the set absent where the rays would have found it absent, so every
 // pixel keeps its light, with fewer estimates.
-TEST(PacketRender, ShadowCylindersChangeNoPixel) {
+TEST(LaneRender, ShadowCylindersChangeNoPixel) {
     for (const char* id : {"case01_sqr_A", "case06_sqr_A_tilt"}) {
         Scene scene = testing::referenceScene(id);
         scene.shading.shadows = Shadows::Hard;
@@ -100,15 +100,15 @@ TEST(PacketRender, ShadowCylindersChangeNoPixel) {
                                   camera.pixelFootprint(1.0), scene.render.maxSteps};
         const auto lanes = LaneFractal::from(fractal, Precision::Single);
         ASSERT_TRUE(lanes);
-        PacketTileRenderer plain(*lanes, camera, shader, march, 1, false);
-        PacketTileRenderer clipped(*lanes, camera, shader, march, 1, true);
+        LaneTileRenderer plain(*lanes, camera, shader, march, 1, false);
+        LaneTileRenderer clipped(*lanes, camera, shader, march, 1, true);
         int64_t plainEstimates = 0, clippedEstimates = 0;
         int hits = 0, changed = 0;
         for (int y0 = 0; y0 < 240; y0 += 32) {
             for (int x0 = 0; x0 < 320; x0 += 32) {
                 const Tile tile{x0, y0, std::min(x0 + 32, 320), std::min(y0 + 32, 240)};
                 std::vector<PixelSamples> a, b;
-                PacketTileStats statsA, statsB;
+                LaneTileStats statsA, statsB;
                 plain.render(tile, a, statsA);
                 clipped.render(tile, b, statsB);
                 plainEstimates += statsA.shading.estimates;
@@ -132,7 +132,7 @@ TEST(PacketRender, ShadowCylindersChangeNoPixel) {
 // The tile size (imageParallelOptions: 16, 32 or 64 pixels) changes no pixel: the cone blocks
 // and shadow cylinders lie on the same 4-pixel grid in tiles of any of these sizes, and each
 // ray is marched alone whatever the lanes beside it hold.
-TEST(PacketRender, TileSizeChangesNoPixel) {
+TEST(LaneRender, TileSizeChangesNoPixel) {
     Scene scene = testing::referenceScene("case01_sqr_A");
     scene.shading.shadows = Shadows::Hard;
     const Fractal fractal = Fractal::fromScene(scene);
@@ -144,12 +144,12 @@ TEST(PacketRender, TileSizeChangesNoPixel) {
     const auto lanes = LaneFractal::from(fractal, Precision::Single);
     ASSERT_TRUE(lanes);
     auto renderInTiles = [&](int size) {
-        PacketTileRenderer renderer(*lanes, camera, shader, march, 1, true);
+        LaneTileRenderer renderer(*lanes, camera, shader, march, 1, true);
         std::vector<PixelSamples> image(size_t(width * height)), tilePixels;
         for (int y0 = 0; y0 < height; y0 += size) {
             for (int x0 = 0; x0 < width; x0 += size) {
                 const Tile tile{x0, y0, std::min(x0 + size, width), std::min(y0 + size, height)};
-                PacketTileStats stats;
+                LaneTileStats stats;
                 renderer.render(tile, tilePixels, stats);
                 const int tileWidth = tile.x1 - tile.x0;
                 for (int y = tile.y0; y < tile.y1; ++y) {
@@ -179,7 +179,7 @@ TEST(PacketRender, TileSizeChangesNoPixel) {
 }
 
 // Formulas that are not s z^d + c, and the fixed-step marcher, take the scalar path.
-TEST(PacketRender, OtherFormulasAndFixedStepUseTheScalarPath) {
+TEST(LaneRender, OtherFormulasAndFixedStepUseTheScalarPath) {
     Scene scene = testing::referenceScene("case01_sqr_A");
     scene.render.width = 16;
     scene.render.height = 12;

@@ -1,4 +1,4 @@
-// The SIMD kernels against the scalar reference they mirror (distance.cpp, fractal.cpp,
+// The SIMD lanes against the scalar reference they mirror (distance.cpp, fractal.cpp,
 // march.cpp): the same estimates, normals and march ends, in double lanes to rounding and in
 // float lanes to the precision of floats.
 #include "quaternia/render/lanes/march_lanes.h"
@@ -142,7 +142,7 @@ void expectEstimatesMatch(const Fractal& fractal, unsigned seed) {
 // Distances alone (ambient occlusion's query) take the loop without the orbit where the bailout
 // certifies escape, and the general one where it does not: both give the full estimate's
 // distance exactly, 0 inside.
-TEST(PacketKernels, DistancesAloneEqualTheFullEstimates) {
+TEST(MarchLanes, DistancesAloneEqualTheFullEstimates) {
     Scene certified = testing::referenceScene("case01_sqr_A");
     Scene uncertified = certified;
     uncertified.fractal.bailout = 1.2;  // below the escape radius, about 1.47
@@ -169,7 +169,7 @@ TEST(PacketKernels, DistancesAloneEqualTheFullEstimates) {
     }
 }
 
-TEST(PacketKernels, EstimatesMatchTheScalarReference) {
+TEST(MarchLanes, EstimatesMatchTheScalarReference) {
     expectEstimatesMatch(Fractal::fromScene(testing::referenceScene("case01_sqr_A")), 2);
     expectEstimatesMatch(Fractal::fromScene(testing::referenceScene("case08_cube_F")), 3);
     expectEstimatesMatch(tiltedFractal(), 4);
@@ -177,7 +177,7 @@ TEST(PacketKernels, EstimatesMatchTheScalarReference) {
 
 // Points just outside the set (where the renderer takes normals): the lanes' analytic gradient
 // points the way of Fractal::normal.
-TEST(PacketKernels, NormalsMatchTheAnalyticNormal) {
+TEST(MarchLanes, NormalsMatchTheAnalyticNormal) {
     for (const char* id : {"case01_sqr_A", "case08_cube_F"}) {
         Fractal fractal = Fractal::fromScene(testing::referenceScene(id));
         PointBatch all = randomPoints(4000, 1.6, 5), nearSet;
@@ -217,7 +217,7 @@ TEST(PacketKernels, NormalsMatchTheAnalyticNormal) {
 // same normals, bit for bit, as from the estimates' counts, in the three-number lanes (float,
 // z^2 + c, certified bailout) and where the counts still come from estimates (double lanes,
 // z^3 + c, an uncertified bailout).
-TEST(PacketKernels, NormalsAloneEqualTheNormalsOfTheEstimates) {
+TEST(MarchLanes, NormalsAloneEqualTheNormalsOfTheEstimates) {
     Scene certified = testing::referenceScene("case01_sqr_A");
     Scene uncertified = certified;
     uncertified.fractal.bailout = 1.2;  // below the escape radius, about 1.47
@@ -259,7 +259,7 @@ TEST(PacketKernels, NormalsAloneEqualTheNormalsOfTheEstimates) {
 }
 
 // Camera rays in double lanes end as sphereTrace's do: the same kind of end at the same t.
-TEST(PacketKernels, CameraRaysEndWhereSphereTracingEnds) {
+TEST(MarchLanes, CameraRaysEndWhereSphereTracingEnds) {
     Scene scene = testing::referenceScene("case01_sqr_A");
     Fractal fractal = Fractal::fromScene(scene);
     Camera camera(scene.camera, 64, 48);
@@ -300,7 +300,7 @@ TEST(PacketKernels, CameraRaysEndWhereSphereTracingEnds) {
 
 // Every instruction set compiled in and supported here (e.g. SSE4, AVX2, AVX-512, and the
 // portable fallback) computes the same estimates: the runtime dispatch cannot pick a broken one.
-TEST(PacketKernels, EveryCompiledTargetAgrees) {
+TEST(MarchLanes, EveryCompiledTargetAgrees) {
     Fractal fractal = Fractal::fromScene(testing::referenceScene("case01_sqr_A"));
     auto lanes = LaneFractal::from(fractal, Precision::Double);
     PointBatch points = randomPoints(500, 1.6, 6);

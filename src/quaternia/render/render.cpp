@@ -38,7 +38,7 @@ double unitFromHash(uint32_t h) {
 // Each thread's counters and scratch on their own cache lines, so that threads do not contend.
 struct alignas(64) ThreadTotals {
     RenderStats stats;
-    std::unique_ptr<PacketTileRenderer> packets;  // the SIMD path's batches
+    std::unique_ptr<LaneTileRenderer> laneTiles;  // the SIMD path's batches
     std::vector<PixelSamples> pixels;
     std::vector<Rgba> row;  // a tile's row on its way to RenderResult::samples
 };
@@ -91,8 +91,8 @@ class RowTarget {
     size_t sampleRowBytes_ = 0, samplePixelBytes_ = 0;
 };
 
-// The work of a packet tile, as render statistics (its hits are counted as its pixels finish).
-RenderStats statsOf(const PacketTileStats& tile, int64_t rays) {
+// The work of a lane tile, as render statistics (its hits are counted as its pixels finish).
+RenderStats statsOf(const LaneTileStats& tile, int64_t rays) {
     RenderStats stats;
     stats.rays = rays;
     stats.marchSteps = tile.marchSteps;
@@ -112,7 +112,7 @@ class FrameRenderer {
     const char* engine() const { return lanes_ ? laneTargetName() : "scalar"; }
     void renderTile(const Tile& tile, ThreadTotals& thread) const {
         if (lanes_) {
-            renderTilePackets(tile, thread);
+            renderTileInLanes(tile, thread);
         } else {
             renderTileScalar(tile, thread);
         }
@@ -122,7 +122,7 @@ class FrameRenderer {
     Rgba finishPixel(int px, int py, const PixelSamples& pixel, const Color& background) const;
     Rgba renderPixel(int px, int py, RenderStats& stats) const;
     void renderTileScalar(const Tile& tile, ThreadTotals& thread) const;
-    void renderTilePackets(const Tile& tile, ThreadTotals& thread) const;
+    void renderTileInLanes(const Tile& tile, ThreadTotals& thread) const;
     void finishRowsOnUniformBackground(const Tile& tile, ThreadTotals& thread) const;
     void finishRowsOnBackgroundRows(const Tile& tile, ThreadTotals& thread) const;
 
@@ -228,15 +228,15 @@ void FrameRenderer::renderTileScalar(const Tile& tile, ThreadTotals& thread) con
     }
 }
 
-// The SIMD path: the tile's samples summed per pixel by the thread's PacketTileRenderer, then
+// The SIMD path: the tile's samples summed per pixel by the thread's LaneTileRenderer, then
 // the pixels finished row by row.
-void FrameRenderer::renderTilePackets(const Tile& tile, ThreadTotals& thread) const {
-    if (!thread.packets) {
-        thread.packets =
-            std::make_unique<PacketTileRenderer>(*lanes_, camera_, shader_, march_, samples_);
+void FrameRenderer::renderTileInLanes(const Tile& tile, ThreadTotals& thread) const {
+    if (!thread.laneTiles) {
+        thread.laneTiles =
+            std::make_unique<LaneTileRenderer>(*lanes_, camera_, shader_, march_, samples_);
     }
-    PacketTileStats tileStats;
-    thread.packets->render(tile, thread.pixels, tileStats);
+    LaneTileStats tileStats;
+    thread.laneTiles->render(tile, thread.pixels, tileStats);
     thread.stats += statsOf(tileStats, int64_t(samples_) * int64_t(thread.pixels.size()));
     if (uniformBackground_) {
         finishRowsOnUniformBackground(tile, thread);

@@ -1,4 +1,4 @@
-// The shading kernels (shading_lanes.h) against the scalar formulas they mirror, on every
+// The shading lanes (shading_lanes.h) against the scalar formulas they mirror, on every
 // instruction set compiled in and supported here.
 #include "quaternia/render/lanes/shading_lanes.h"
 
@@ -20,7 +20,7 @@ namespace {
 
 // Display encoding of packed RGBA pixels: colour channels as Shader::toDisplay's formula (to
 // float precision), alpha untouched, on every target and for counts that leave a partial vector.
-TEST(ShadingKernels, DisplayEncodingKeepsAlphaOnEveryTarget) {
+TEST(ShadingLanes, DisplayEncodingKeepsAlphaOnEveryTarget) {
     const float exposure = 1.3f, inverseGamma = 1 / 2.2f;
     std::mt19937 random(11);
     std::uniform_real_distribution<float> value(-0.5f, 1.5f), alpha(0.0f, 1.0f);
@@ -50,7 +50,7 @@ TEST(ShadingKernels, DisplayEncodingKeepsAlphaOnEveryTarget) {
 // Shader::light in lanes gives the scalar lighting (to float precision) of random surface
 // samples, lit and unlit, with and without a highlight, on every target and for counts that
 // leave a partial vector.
-TEST(ShadingKernels, LightingMatchesTheShaderOnEveryTarget) {
+TEST(ShadingLanes, LightingMatchesTheShaderOnEveryTarget) {
     Scene scene = defaultScene();
     scene.shading.shininess = 20;
     const Fractal fractal = Fractal::fromScene(scene);

@@ -42,7 +42,7 @@ enum class MarchMethod { SphereTracing, FixedStep };
 // Opaque: the image is composited over the background gradient, alpha 1.
 enum class AlphaMode { Coverage, Opaque };
 
-// Simd: the packet kernels (march_lanes.h) for s z^d + c with sphere tracing, in float or
+// Simd: the lanes (render/lanes/march_lanes.h) for s z^d + c with sphere tracing, in float or
 // double lanes; everything else, and Scalar, runs the scalar double reference (march.h).
 enum class RenderEngine { Simd, Scalar };
 enum class Precision { Single, Double };

@@ -1,4 +1,4 @@
-// The distance estimate in SIMD lanes, shared by the kernels of march_lanes.cpp: the
+// The distance estimate in SIMD lanes, shared by the functions of march_lanes.cpp: the
 // fractal's constants as lanes, JuliaSet::estimate for K vectors of points at once
 // (estimateLanes), and the estimates along the rays held in lanes (estimateAlongRays).
 //
@@ -18,12 +18,12 @@
 template <class D>
 struct LaneConstants {
     using V = hn::Vec<D>;
-    QuaternionLanes<V> origin, axis0, axis1, axis2, c;
+    QuaternionT<V> origin, axis0, axis1, axis2, c;
     V scale, bailoutSquared, escapeRadiusSquared, estimateRadiusSquared, stepScale, maxIterations;
     V gainFactor;  // 4 s^2 for d = 2, s^2 d^2 otherwise
     // The float loop of s z^2 + c in u = 2 s z (estimateThreeNumbers): the slice map times 2 s,
     // 2 s c (complex there: scaledC + scaledCi i), the radii squared times 4 s^2, and 1 / (4 s^2).
-    QuaternionLanes<V> loopOrigin, loopAxis0, loopAxis1, loopAxis2;
+    QuaternionT<V> loopOrigin, loopAxis0, loopAxis1, loopAxis2;
     V scaledC, scaledCi, scaledBailoutSquared, scaledEscapeRadiusSquared,
         scaledEstimateRadiusSquared, inverseFourScaleSquared;
     int degree, maxIterationCount;
@@ -42,8 +42,8 @@ struct LaneConstants {
         certified = f.bailoutSquared >= f.escapeRadiusSquared;
         threeNumbers = sizeof(T) == 4 && f.degree == 2 && certified;
         auto lanes = [&](const std::array<double, 4>& q, double factor = 1) {
-            return QuaternionLanes<V>{hn::Set(d, T(factor * q[0])), hn::Set(d, T(factor * q[1])),
-                                      hn::Set(d, T(factor * q[2])), hn::Set(d, T(factor * q[3]))};
+            return QuaternionT<V>{hn::Set(d, T(factor * q[0])), hn::Set(d, T(factor * q[1])),
+                                  hn::Set(d, T(factor * q[2])), hn::Set(d, T(factor * q[3]))};
         };
         origin = lanes(f.origin);
         axis0 = lanes(f.axes[0]);
@@ -72,18 +72,18 @@ struct LaneConstants {
     }
 
     // The slice: a 3D point to its quaternion.
-    QuaternionLanes<V> quaternionFromWorld(V x, V y, V z) const {
+    QuaternionT<V> quaternionFromWorld(V x, V y, V z) const {
         return affine(origin, axis0, axis1, axis2, x, y, z);
     }
     // The same point as estimateThreeNumbers takes it: u = 2 s z.
-    QuaternionLanes<V> loopFromWorld(V x, V y, V z) const {
+    QuaternionT<V> loopFromWorld(V x, V y, V z) const {
         return affine(loopOrigin, loopAxis0, loopAxis1, loopAxis2, x, y, z);
     }
 
   private:
-    static QuaternionLanes<V> affine(const QuaternionLanes<V>& o, const QuaternionLanes<V>& a0,
-                                     const QuaternionLanes<V>& a1, const QuaternionLanes<V>& a2,
-                                     V x, V y, V z) {
+    static QuaternionT<V> affine(const QuaternionT<V>& o, const QuaternionT<V>& a0,
+                                 const QuaternionT<V>& a1, const QuaternionT<V>& a2, V x, V y,
+                                 V z) {
         return {hn::MulAdd(z, a2.w, hn::MulAdd(y, a1.w, hn::MulAdd(x, a0.w, o.w))),
                 hn::MulAdd(z, a2.x, hn::MulAdd(y, a1.x, hn::MulAdd(x, a0.x, o.x))),
                 hn::MulAdd(z, a2.y, hn::MulAdd(y, a1.y, hn::MulAdd(x, a0.y, o.y))),
@@ -99,8 +99,7 @@ struct LaneEstimate {
 };
 
 template <class V, class M>
-HWY_INLINE QuaternionLanes<V> select(M mask, const QuaternionLanes<V>& yes,
-                                     const QuaternionLanes<V>& no) {
+HWY_INLINE QuaternionT<V> select(M mask, const QuaternionT<V>& yes, const QuaternionT<V>& no) {
     return {hn::IfThenElse(mask, yes.w, no.w), hn::IfThenElse(mask, yes.x, no.x),
             hn::IfThenElse(mask, yes.y, no.y), hn::IfThenElse(mask, yes.z, no.z)};
 }
@@ -136,7 +135,7 @@ HWY_INLINE V fastLogLanes(D d, V x) {
 // 4e-4 on every target) and the logarithm from fastLogLanes: a division, a square root and a
 // longer logarithm less per estimate. (A margin of 1/512 below the exact value, tried to keep
 // the rounding one-sided, moved the lanes' ambient occlusion and soft shadows visibly away from
-// the scalar path's: PacketRender.ShadedImageMatchesTheScalarPath.)
+// the scalar path's: LaneRender.ShadedImageMatchesTheScalarPath.)
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE V closingDistance(D d, V radiusSquared, V derivativeSquared, V stepScale) {
     using T = hn::TFromD<D>;
@@ -207,9 +206,9 @@ HWY_INLINE bool settleCertified(D d, V r2, V derivativeSquared, V stopRadius, V 
 // chain); a lane whose estimate is final is marked done and its |z|^2 and |z'|^2 are kept at
 // that iteration, while its z runs on unused (it may overflow; nothing reads it). The loop ends
 // when every lane is done. kOrbit also keeps the orbit trap and the iteration count. (The
-// marching kernels' hot case has its own loop: estimateThreeNumbers.)
+// marchers' hot case has its own loop: estimateThreeNumbers.)
 template <bool kQuadratic, bool kOrbit, size_t K, class D>
-HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn::Vec<D>> (&z)[K],
+HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionT<hn::Vec<D>> (&z)[K],
                               const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
                               LaneCounters& counters) {
     using V = hn::Vec<D>;
@@ -227,7 +226,7 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
     M escaped[K], done[K], inside[K];
     bool allDone = true;
     for (size_t j = 0; j < K; ++j) {
-        r2[j] = normSquaredLanes(z[j]);
+        r2[j] = normSquaredPairwise(z[j]);
         derivativeSquared[j] = one;
         startLanes(d, r2[j], live[j], k.bailoutSquared, k.escapeRadiusSquared,
                    k.estimateRadiusSquared, k.maxIterationCount, escaped[j], done[j], inside[j]);
@@ -248,15 +247,15 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
         for (size_t j = 0; j < K; ++j) {
             if constexpr (kQuadratic) {
                 derivativeSquared[j] = derivativeSquared[j] * (k.gainFactor * r2[j]);
-                z[j] = quadraticStepLanes(z[j], k.scale, k.c);
+                z[j] = quadraticStep(z[j], k.scale, k.c);
             } else {
                 V gain = k.gainFactor;
                 for (int e = 1; e < k.degree; ++e)
                     gain = gain * r2[j];
                 derivativeSquared[j] = derivativeSquared[j] * gain;
-                z[j] = powerStepLanes(z[j], k.degree, k.scale, k.c);
+                z[j] = powerStep(z[j], k.degree, k.scale, k.c);
             }
-            r2[j] = normSquaredLanes(z[j]);
+            r2[j] = normSquaredPairwise(z[j]);
             if (certified) {
                 const bool groupDone = settleCertified(
                     d, r2[j], derivativeSquared[j], k.estimateRadiusSquared, k.bailoutSquared,
@@ -322,7 +321,7 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionLanes<hn
 // iteration count, as estimateLanes does.
 template <bool kOrbit, size_t K, class D>
 HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
-                                     const QuaternionLanes<hn::Vec<D>> (&u)[K],
+                                     const QuaternionT<hn::Vec<D>> (&u)[K],
                                      const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
                                      LaneCounters& counters) {
     using V = hn::Vec<D>;
@@ -405,20 +404,20 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
 // The estimates at the current points of the rays in the lanes (o + t d, through the slice):
 // live lanes, their t, and the estimates. False when no lane holds a ray.
 template <bool kQuadratic, size_t K, class D, class T>
-HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes<T>& s,
+HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes<T>& rayLanes,
                                   hn::Mask<D> (&live)[K], hn::Vec<D> (&t)[K],
                                   LaneEstimate<D> (&e)[K], LaneCounters& counters) {
     const size_t lanes = hn::Lanes(d);
-    QuaternionLanes<hn::Vec<D>> q[K];
+    QuaternionT<hn::Vec<D>> q[K];
     bool anyLive = false;
     for (size_t j = 0; j < K; ++j) {
         const size_t o = j * lanes;
-        live[j] = hn::Load(d, s.live + o) > hn::Zero(d);
+        live[j] = hn::Load(d, rayLanes.live + o) > hn::Zero(d);
         anyLive = anyLive || !hn::AllFalse(d, live[j]);
-        t[j] = hn::Load(d, s.t + o);
-        const auto x = hn::MulAdd(hn::Load(d, s.dx + o), t[j], hn::Load(d, s.ox + o));
-        const auto y = hn::MulAdd(hn::Load(d, s.dy + o), t[j], hn::Load(d, s.oy + o));
-        const auto z = hn::MulAdd(hn::Load(d, s.dz + o), t[j], hn::Load(d, s.oz + o));
+        t[j] = hn::Load(d, rayLanes.t + o);
+        const auto x = hn::MulAdd(hn::Load(d, rayLanes.dx + o), t[j], hn::Load(d, rayLanes.ox + o));
+        const auto y = hn::MulAdd(hn::Load(d, rayLanes.dy + o), t[j], hn::Load(d, rayLanes.oy + o));
+        const auto z = hn::MulAdd(hn::Load(d, rayLanes.dz + o), t[j], hn::Load(d, rayLanes.oz + o));
         q[j] = kQuadratic && k.threeNumbers ? k.loopFromWorld(x, y, z)
                                             : k.quaternionFromWorld(x, y, z);
     }

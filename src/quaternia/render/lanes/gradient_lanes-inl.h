@@ -54,9 +54,9 @@ struct ThreeNumberTangents {
     V dA[3], dB[3], dR[3];  // the slice's three axes carried through the Jacobians
 
     ThreeNumberTangents(const LaneConstants<D>& k, V x, V y, V z) {
-        const QuaternionLanes<V> u = k.loopFromWorld(x, y, z);
+        const QuaternionT<V> u = k.loopFromWorld(x, y, z);
         a = u.w, b = u.x, p = hn::MulAdd(u.z, u.z, u.y * u.y);
-        const QuaternionLanes<V>* axes[3] = {&k.loopAxis0, &k.loopAxis1, &k.loopAxis2};
+        const QuaternionT<V>* axes[3] = {&k.loopAxis0, &k.loopAxis1, &k.loopAxis2};
         for (int i = 0; i < 3; ++i) {
             dA[i] = axes[i]->w, dB[i] = axes[i]->x;
             dR[i] = hn::MulAdd(u.z, axes[i]->z, u.y * axes[i]->y);
@@ -155,37 +155,37 @@ HWY_INLINE void quaternionGradient(D d, const LaneConstants<D>& k, V x, V y, V z
     constexpr T kShrink = sizeof(T) == 4 ? T(1e-10) : T(1e-100);
     const V one = hn::Set(d, T(1));
     // Only the direction matters: rescale all three together before they overflow.
-    auto rescale = [&](QuaternionLanes<V>& t0, QuaternionLanes<V>& t1, QuaternionLanes<V>& t2) {
-        V largest =
-            hn::Max(normSquaredLanes(t0), hn::Max(normSquaredLanes(t1), normSquaredLanes(t2)));
+    auto rescale = [&](QuaternionT<V>& t0, QuaternionT<V>& t1, QuaternionT<V>& t2) {
+        V largest = hn::Max(normSquaredPairwise(t0),
+                            hn::Max(normSquaredPairwise(t1), normSquaredPairwise(t2)));
         auto huge = largest > hn::Set(d, kLarge);
         if (!hn::AllFalse(d, huge)) {
             const V factor = hn::IfThenElse(huge, hn::Set(d, kShrink), one);
-            t0 = {t0.w * factor, t0.x * factor, t0.y * factor, t0.z * factor};
-            t1 = {t1.w * factor, t1.x * factor, t1.y * factor, t1.z * factor};
-            t2 = {t2.w * factor, t2.x * factor, t2.y * factor, t2.z * factor};
+            t0 = t0 * factor;
+            t1 = t1 * factor;
+            t2 = t2 * factor;
         }
     };
     auto z = k.quaternionFromWorld(x, y, z0);
-    QuaternionLanes<V> t0 = k.axis0, t1 = k.axis1, t2 = k.axis2;
+    QuaternionT<V> t0 = k.axis0, t1 = k.axis1, t2 = k.axis2;
     // One iteration of the point and the tangents (iterateEachLaneItsCount's `hold`).
     iterateEachLaneItsCount(d, m, fewest, most, counters, [&](const auto& hold) {
-        QuaternionLanes<V> n0, n1, n2, nz;
+        QuaternionT<V> n0, n1, n2, nz;
         if constexpr (kQuadratic) {
-            n0 = quadraticDerivativeLanes(z, t0, k.scale);
-            n1 = quadraticDerivativeLanes(z, t1, k.scale);
-            n2 = quadraticDerivativeLanes(z, t2, k.scale);
-            nz = quadraticStepLanes(z, k.scale, k.c);
+            n0 = quadraticDerivative(z, t0, k.scale);
+            n1 = quadraticDerivative(z, t1, k.scale);
+            n2 = quadraticDerivative(z, t2, k.scale);
+            nz = quadraticStep(z, k.scale, k.c);
         } else {
-            n0 = powerDerivativeLanes(z, t0, k.degree, k.scale);
-            n1 = powerDerivativeLanes(z, t1, k.degree, k.scale);
-            n2 = powerDerivativeLanes(z, t2, k.degree, k.scale);
-            nz = powerStepLanes(z, k.degree, k.scale, k.c);
+            n0 = powerDerivative(z, t0, k.degree, k.scale);
+            n1 = powerDerivative(z, t1, k.degree, k.scale);
+            n2 = powerDerivative(z, t2, k.degree, k.scale);
+            nz = powerStep(z, k.degree, k.scale, k.c);
         }
         t0 = hold(n0, t0), t1 = hold(n1, t1), t2 = hold(n2, t2), z = hold(nz, z);
         rescale(t0, t1, t2);
     });
-    gx = dotLanes(z, t0), gy = dotLanes(z, t1), gz = dotLanes(z, t2);
+    gx = dot(z, t0), gy = dot(z, t1), gz = dot(z, t2);
 }
 
 #endif  // QUATERNIA_GRADIENT_LANES_INL_H_

@@ -1,4 +1,4 @@
-// Per-lane bookkeeping of the SIMD kernels (march_lanes.cpp): aligned arrays that hold one
+// Per-lane bookkeeping of the SIMD lanes (march_lanes.cpp): aligned arrays that hold one
 // value per lane, loaded into and stored from vectors each step, and the scalar refill of a lane
 // whose ray has finished. Plain C++ (no SIMD), shared by every instruction-set target.
 #pragma once
@@ -31,7 +31,8 @@ struct RayLanes {
     QUATERNIA_LANE_ARRAY(T, t);
     QUATERNIA_LANE_ARRAY(T, tFar);
     QUATERNIA_LANE_ARRAY(T, tOutside);
-    QUATERNIA_LANE_ARRAY(T, confirming);
+    QUATERNIA_LANE_ARRAY(T, confirming);  // camera rays: confirmation steps taken (sphereTrace)
+    QUATERNIA_LANE_ARRAY(T, visibility);  // shadow rays: the running visibility (Shader::shadow)
     QUATERNIA_LANE_ARRAY(T, steps);
     QUATERNIA_LANE_ARRAY(T, live);
     // Over-relaxed marching: the last ball's radius and the last step (camera rays: the relaxed
@@ -46,8 +47,8 @@ struct RayLanes {
 
     // Moves the ray and march state of lane `from` into lane `to`, and empties `from`.
     void moveLane(size_t from, size_t to) {
-        for (T* field : {ox, oy, oz, dx, dy, dz, t, tFar, tOutside, confirming, steps, live, radius,
-                         lastStep, relaxation, plainStep, spread})
+        for (T* field : {ox, oy, oz, dx, dy, dz, t, tFar, tOutside, confirming, visibility, steps,
+                         live, radius, lastStep, relaxation, plainStep, spread})
             field[to] = field[from];
         ray[to] = ray[from];
         ray[from] = -1;
@@ -72,8 +73,7 @@ struct RayLanes {
     }
 
     // Puts ray `next` of the batch into `lane` (and advances next), or empties the lane when the
-    // batch is exhausted. Camera rays start at tNear; shadow rays at 0 with confirming = 1, the
-    // running visibility.
+    // batch is exhausted. Camera rays start at tNear; shadow rays at 0 with visibility 1.
     void load(size_t lane, const RayBatch& rays, size_t& next, bool startAtZero = false) {
         if (next >= rays.size()) {
             ray[lane] = -1;
@@ -88,7 +88,8 @@ struct RayLanes {
         t[lane] = startAtZero ? T(0) : T(rays.tNear[i]);
         tOutside[lane] = t[lane];
         tFar[lane] = T(rays.tFar[i]);
-        confirming[lane] = startAtZero ? T(1) : T(0);
+        confirming[lane] = T(0);
+        visibility[lane] = T(1);
         steps[lane] = T(0);
         radius[lane] = lastStep[lane] = plainStep[lane] = T(0);
         spread[lane] = rays.spread.empty() ? T(0) : T(rays.spread[i]);
@@ -96,21 +97,47 @@ struct RayLanes {
     }
 };
 
-// Four arrays of scratch per lane: results on their way out, or points on their way in.
+// Points on their way into the lanes, or the gradients at them on their way out.
 template <class T>
-struct LaneScratch {
-    QUATERNIA_LANE_ARRAY(T, a);
-    QUATERNIA_LANE_ARRAY(T, b);
-    QUATERNIA_LANE_ARRAY(T, c);
-    QUATERNIA_LANE_ARRAY(T, kind);
+struct Vector3Lanes {
+    QUATERNIA_LANE_ARRAY(T, x);
+    QUATERNIA_LANE_ARRAY(T, y);
+    QUATERNIA_LANE_ARRAY(T, z);
 
-    // Points [begin, begin + count) into a, b, c; the lanes past count repeat the last point so
-    // that every lane computes something finite.
+    // Points [begin, begin + count); the lanes past count repeat the last point so that every
+    // lane computes something finite.
     void gather(const PointBatch& points, size_t begin, size_t count) {
         for (size_t lane = 0; lane < kLaneCapacity<T>; ++lane) {
             size_t i = begin + std::min(lane, count - 1);
-            a[lane] = T(points.x[i]), b[lane] = T(points.y[i]), c[lane] = T(points.z[i]);
+            x[lane] = T(points.x[i]), y[lane] = T(points.y[i]), z[lane] = T(points.z[i]);
         }
+    }
+};
+
+// The estimates at points on their way out of the lanes (PointEstimate); the trap, the
+// iteration counts, the radii and insideLanes are filled only where the orbit is asked for.
+template <class T>
+struct EstimateLanes {
+    QUATERNIA_LANE_ARRAY(T, distance);
+    QUATERNIA_LANE_ARRAY(T, trap);
+    QUATERNIA_LANE_ARRAY(T, iterations);
+    QUATERNIA_LANE_ARRAY(T, radiusSquared);
+    uint64_t insideLanes = 0;  // bit per lane of the points inside
+};
+
+// What the camera rays that ended in a step leave in their lanes, for their TraceResult.
+template <class T>
+struct CameraEndLanes {
+    QUATERNIA_LANE_ARRAY(T, t);
+    QUATERNIA_LANE_ARRAY(T, tOutside);
+    QUATERNIA_LANE_ARRAY(T, steps);
+    // A bit per lane, lane i at bit i: the rays that ended this step, and which of them ended
+    // inside or grazing (the others missed).
+    uint64_t ended = 0, inside = 0, grazing = 0;
+
+    TraceEnd endOf(size_t lane) const {
+        const uint64_t bit = uint64_t(1) << lane;
+        return inside & bit ? TraceEnd::Inside : grazing & bit ? TraceEnd::Grazing : TraceEnd::Miss;
     }
 };
 

@@ -1,4 +1,4 @@
-// SIMD kernels of march_lanes.h, compiled once per instruction set by Highway's
+// The SIMD lanes of march_lanes.h, compiled once per instruction set by Highway's
 // foreach_target and chosen at run time (HWY_DYNAMIC_DISPATCH). See the header for what each
 // computes; the scalar reference each one mirrors is named beside it.
 
@@ -16,6 +16,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "quaternia/algebra/quaternion.h"
+
 #include "quaternia/render/lanes/lane_state.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/lanes/march_rules.h"
@@ -25,6 +27,11 @@ namespace quaternia {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// QuaternionT's ring operations for this target's vectors (quaternion.h says why they are
+// included here again).
+template <class V>
+concept QuaternionComponent = !std::is_arithmetic_v<V>;
+#include "quaternia/algebra/quaternion_arithmetic-inl.h"
 #include "quaternia/fractal/julia_steps-inl.h"
 // After the formulas it uses:
 #include "quaternia/render/lanes/estimate_lanes-inl.h"
@@ -57,23 +64,158 @@ HWY_INLINE V relaxedLength(D d, V relaxation, V t, V tPrevious, V radius, V dist
 // vector they move into the first, which steps alone: the last rays of a batch would otherwise
 // keep both vectors iterating for the few lanes still live.
 template <bool kQuadratic, class D, class T, class Step>
-HWY_INLINE void marchBatch(D d, const LaneConstants<D>& k, RayLanes<T>& s, const RayBatch& rays,
-                           const size_t& next, LaneCounters& counters, const Step& step) {
+HWY_INLINE void marchBatch(D d, const LaneConstants<D>& k, RayLanes<T>& rayLanes,
+                           const RayBatch& rays, const size_t& next, LaneCounters& counters,
+                           const Step& step) {
     auto stepGroups = [&](auto groups) {
         constexpr size_t G = decltype(groups)::value;
         hn::Mask<D> live[G];
         hn::Vec<D> t[G];
         LaneEstimate<D> e[G];
-        if (!estimateAlongRays<kQuadratic>(d, k, s, live, t, e, counters)) return false;
+        if (!estimateAlongRays<kQuadratic>(d, k, rayLanes, live, t, e, counters)) return false;
         step(groups, live, t, e);
         return true;
     };
     const size_t lanes = hn::Lanes(d);
-    while (next < rays.size() || !s.gatherLive(lanes, kLaneGroups * lanes)) {
+    while (next < rays.size() || !rayLanes.gatherLive(lanes, kLaneGroups * lanes)) {
         if (!stepGroups(std::integral_constant<size_t, kLaneGroups>{})) return;
     }
     while (stepGroups(std::integral_constant<size_t, 1>{})) {
     }
+}
+
+// The settings of sphereTrace (march.cpp) for camera rays, broadcast to lanes.
+template <class D>
+struct CameraMarchLanes {
+    using V = hn::Vec<D>;
+    using T = hn::TFromD<D>;
+    V zero, one, epsilon, pixelAngle, maxSteps;
+    V confirmBudget, confirmStep;  // kMarchConfirmBudget, kMarchConfirmStep (0 budget: cones)
+    V coneShrink;                  // 1 where cones step by the estimate less their radius
+    V relaxation;
+    hn::Mask<D> relaxing;  // all lanes where steps are over-relaxed, else none
+    bool spreads;          // the rays carry a cone's radius at t = 0 (RayBatch::spread)
+    bool cone;
+
+    CameraMarchLanes(D d, const CameraMarch& march, const RayBatch& rays)
+        : zero(hn::Zero(d)),
+          one(hn::Set(d, T(1))),
+          epsilon(hn::Set(d, T(march.epsilon))),
+          pixelAngle(hn::Set(d, T(march.pixelAngle))),
+          maxSteps(hn::Set(d, T(march.maxSteps))),
+          confirmBudget(hn::Set(d, T(march.cone ? 0 : kMarchConfirmBudget))),
+          confirmStep(hn::Set(d, T(kMarchConfirmStep))),
+          coneShrink(march.cone ? one : zero),
+          relaxation(hn::Set(d, T(march.relaxation))),
+          // Cones step plainly (their steps are already short of the estimate).
+          relaxing(hn::FirstN(d, march.cone || !(march.relaxation > 1) ? 0 : hn::Lanes(d))),
+          spreads(march.cone && !rays.spread.empty()),
+          cone(march.cone) {}
+};
+
+// Where a camera ray stands before its step: the point before (tOutside), its estimate
+// (radius), its plain step and the step taken from it if that was longer (relaxedStep, else 0).
+// Where the plain step and this point's ball leave a gap, the set may lie in it, so this point's
+// estimate is dropped and the ray goes back to the plain step (sphereTrace).
+template <class D>
+struct CameraStepFrom {
+    hn::Vec<D> tPrevious, radius, relaxedStep, plainPrevious;
+    hn::Mask<D> gap;
+
+    template <class T>
+    HWY_INLINE CameraStepFrom(D d, const RayLanes<T>& rayLanes, size_t o, hn::Mask<D> live,
+                              hn::Vec<D> distance)
+        : tPrevious(hn::Load(d, rayLanes.tOutside + o)),
+          radius(hn::Load(d, rayLanes.radius + o)),
+          relaxedStep(hn::Load(d, rayLanes.lastStep + o)),
+          plainPrevious(hn::Load(d, rayLanes.plainStep + o)),
+          gap(hn::And(live, relaxedStep > plainPrevious + distance)) {}
+};
+
+// The step of sphereTrace from t: the plain step (the estimate, at least kMarchConfirmStep
+// footprints while confirming; a cone's less its radius), or the over-relaxed one where it is
+// longer and stays before tFar.
+template <class D>
+struct CameraStepLength {
+    hn::Vec<D> plain, relaxed;
+    hn::Mask<D> relax;
+
+    HWY_INLINE CameraStepLength(D d, const CameraMarchLanes<D>& c, const CameraStepFrom<D>& from,
+                                hn::Vec<D> t, hn::Vec<D> tFar, hn::Vec<D> distance,
+                                hn::Vec<D> footprint, hn::Vec<D> confirming)
+        : plain(hn::IfThenElse(confirming > c.zero, hn::Max(distance, c.confirmStep * footprint),
+                               hn::NegMulAdd(c.coneShrink, footprint, distance))),
+          relaxed(relaxedLength(d, c.relaxation, t, from.tPrevious, from.radius, distance)),
+          relax(hn::And(c.relaxing, hn::And(relaxed > plain, relaxed + t <= tFar))) {}
+};
+
+// One step of the camera rays in lanes [o, o + Lanes(d)) from their estimates at t: the march
+// state moves on, and the rays that end are recorded in `ends` with where they ended.
+template <class D, class T>
+HWY_INLINE void stepCameraLanes(D d, const CameraMarchLanes<D>& c, RayLanes<T>& rayLanes, size_t o,
+                                hn::Mask<D> live, hn::Vec<D> t, const LaneEstimate<D>& e,
+                                CameraEndLanes<T>& ends) {
+    using V = hn::Vec<D>;
+    const V footprint = c.spreads ? hn::MulAdd(c.pixelAngle, t, hn::Load(d, rayLanes.spread + o))
+                                  : c.pixelAngle * t;
+    const V distance = e.distance;
+    const CameraStepFrom<D> from(d, rayLanes, o, live, distance);
+    const auto gap = from.gap;
+    const V confirmingBefore = hn::Load(d, rayLanes.confirming + o);
+    const V confirming = hn::IfThenElse(
+        gap, confirmingBefore,
+        hn::IfThenElseZero(distance < c.epsilon * footprint, confirmingBefore + c.one));
+    const V steps = hn::Load(d, rayLanes.steps + o) + c.one;
+    const V tFar = hn::Load(d, rayLanes.tFar + o);
+    const CameraStepLength<D> length(d, c, from, t, tFar, distance, footprint, confirming);
+    V step = hn::IfThenElse(length.relax, length.relaxed, length.plain);
+    step = hn::IfThenElse(gap, from.plainPrevious, step);
+    const V tNext = hn::IfThenElse(gap, from.tPrevious, t) + step;
+
+    const auto inside = hn::AndNot(gap, hn::And(live, e.inside));
+    const auto grazing =
+        hn::AndNot(hn::Or(gap, e.inside), hn::And(live, confirming > c.confirmBudget));
+    const auto ended = hn::Or(inside, grazing);
+    const auto missed = hn::AndNot(ended, hn::And(live, hn::Or(tNext > tFar, steps >= c.maxSteps)));
+    hn::Store(t, d, ends.t + o);
+    hn::Store(from.tPrevious, d, ends.tOutside + o);
+    hn::Store(steps, d, ends.steps + o);
+    ends.ended |= laneBits(d, hn::Or(ended, missed)) << o;
+    ends.inside |= laneBits(d, inside) << o;
+    ends.grazing |= laneBits(d, grazing) << o;
+
+    hn::Store(tNext, d, rayLanes.t + o);
+    hn::Store(hn::IfThenElse(gap, from.tPrevious, t), d, rayLanes.tOutside + o);
+    hn::Store(hn::IfThenElse(gap, from.radius, distance), d, rayLanes.radius + o);
+    hn::Store(hn::IfThenElse(gap, from.plainPrevious, length.plain), d, rayLanes.plainStep + o);
+    hn::Store(hn::IfThenElseZero(hn::AndNot(gap, length.relax), length.relaxed), d,
+              rayLanes.lastStep + o);
+    hn::Store(confirming, d, rayLanes.confirming + o);
+    hn::Store(steps, d, rayLanes.steps + o);
+}
+
+// The TraceResults of the rays that ended this step (ends), whose lanes take the next rays of
+// the batch.
+template <class T>
+HWY_INLINE void finishCameraRays(CameraEndLanes<T>& ends, bool cone, RayLanes<T>& rayLanes,
+                                 const RayBatch& rays, size_t& next,
+                                 std::vector<TraceResult>& results) {
+    for (uint64_t left = ends.ended; left != 0; left &= left - 1) {
+        const size_t lane = size_t(__builtin_ctzll(left));
+        TraceResult& r = results[size_t(rayLanes.ray[lane])];
+        r.steps = int(ends.steps[lane]);
+        r.t = ends.t[lane];
+        r.end = ends.endOf(lane);
+        if (r.end == TraceEnd::Inside) {
+            r.tOutside = ends.tOutside[lane];
+        } else if (r.end == TraceEnd::Grazing) {
+            // A cone's last point may be inside for some of its rays; the one before is
+            // covered by an estimate's ball.
+            r.tOutside = cone ? ends.tOutside[lane] : r.t;
+        }
+        rayLanes.load(lane, rays, next);
+    }
+    ends.ended = ends.inside = ends.grazing = 0;
 }
 
 // sphereTrace (march.cpp) for a batch of camera rays, kLaneGroups vectors of rays at a time.
@@ -81,103 +223,25 @@ template <bool kQuadratic, class D>
 void traceCameraLanes(D d, const LaneFractal& fractal, const CameraMarch& march,
                       const RayBatch& rays, std::vector<TraceResult>& results,
                       LaneCounters& counters) {
-    using V = hn::Vec<D>;
-    using M = hn::Mask<D>;
     using T = hn::TFromD<D>;
-    constexpr size_t K = kLaneGroups;
-    constexpr T kConfirmStep = T(kMarchConfirmStep);
     static_assert(HWY_MAX_BYTES <= kMaxLaneBytes);
     const LaneConstants<D> k(d, fractal);
+    const CameraMarchLanes<D> c(d, march, rays);
     const size_t lanes = hn::Lanes(d);
     results.assign(rays.size(), TraceResult{});
-    RayLanes<T> s;
-    LaneScratch<T> finished;
+    RayLanes<T> rayLanes;
+    CameraEndLanes<T> ends;
     size_t next = 0;
-    for (size_t lane = 0; lane < K * lanes; ++lane)
-        s.load(lane, rays, next);
-
-    const V zero = hn::Zero(d), one = hn::Set(d, T(1));
-    const V epsilon = hn::Set(d, T(march.epsilon)), pixelAngle = hn::Set(d, T(march.pixelAngle));
-    const V confirmBudget = hn::Set(d, T(march.cone ? 0 : kMarchConfirmBudget));
-    const V coneShrink = march.cone ? one : zero;
-    const V maxSteps = hn::Set(d, T(march.maxSteps));
-    const bool spreads = march.cone && !rays.spread.empty();
-    // Cones step plainly (their steps are already short of the estimate).
-    const V relaxation = hn::Set(d, T(march.relaxation));
-    const M relaxing = hn::FirstN(d, march.cone || !(march.relaxation > 1) ? 0 : hn::Lanes(d));
+    for (size_t lane = 0; lane < kLaneGroups * lanes; ++lane)
+        rayLanes.load(lane, rays, next);
     // One step of the rays in the first G vectors of lanes, from their estimates (marchBatch).
     auto marchStep = [&](auto groups, const auto& live, const auto& t, const auto& e) {
         constexpr size_t G = decltype(groups)::value;
-
-        uint64_t doneLanes = 0;  // bit per lane of the rays that ended this step
-        for (size_t j = 0; j < G; ++j) {
-            const size_t o = j * lanes;
-            const V footprint = spreads ? hn::MulAdd(pixelAngle, t[j], hn::Load(d, s.spread + o))
-                                        : pixelAngle * t[j];
-            const V distance = e[j].distance;
-            // The point before (tOutside), its estimate (radius), its plain step and the step
-            // taken from it if that was longer (lastStep, else 0): where the plain step and this
-            // point's ball leave a gap, the set may lie in it, so this point's estimate is dropped
-            // and the ray goes back to the plain step (sphereTrace).
-            const V tPrevious = hn::Load(d, s.tOutside + o);
-            const V radius = hn::Load(d, s.radius + o);
-            const V relaxedStep = hn::Load(d, s.lastStep + o);
-            const V plainPrevious = hn::Load(d, s.plainStep + o);
-            const auto gap = hn::And(live[j], relaxedStep > plainPrevious + distance);
-            const V loadedConfirming = hn::Load(d, s.confirming + o);
-            V confirming = hn::IfThenElse(
-                gap, loadedConfirming,
-                hn::IfThenElseZero(distance < epsilon * footprint, loadedConfirming + one));
-            const V steps = hn::Load(d, s.steps + o) + one;
-            auto insideHit = hn::AndNot(gap, hn::And(live[j], e[j].inside));
-            auto grazing =
-                hn::AndNot(hn::Or(gap, e[j].inside), hn::And(live[j], confirming > confirmBudget));
-            const V tFar = hn::Load(d, s.tFar + o);
-            const V relaxed = relaxedLength(d, relaxation, t[j], tPrevious, radius, distance);
-            const V plain = hn::IfThenElse(confirming > zero,
-                                           hn::Max(distance, hn::Set(d, kConfirmStep) * footprint),
-                                           hn::NegMulAdd(coneShrink, footprint, distance));
-            const auto relax = hn::And(relaxing, hn::And(relaxed > plain, relaxed + t[j] <= tFar));
-            V step = hn::IfThenElse(relax, relaxed, plain);
-            step = hn::IfThenElse(gap, plainPrevious, step);
-            const V tNext = hn::IfThenElse(gap, tPrevious, t[j]) + step;
-            auto ended = hn::Or(insideHit, grazing);
-            auto missed =
-                hn::AndNot(ended, hn::And(live[j], hn::Or(tNext > tFar, steps >= maxSteps)));
-            hn::Store(t[j], d, finished.a + o);
-            hn::Store(tPrevious, d, finished.b + o);
-            hn::Store(steps, d, finished.c + o);
-            hn::Store(hn::IfThenElseZero(insideHit, one) +
-                          hn::IfThenElseZero(grazing, hn::Set(d, T(2))) +
-                          hn::IfThenElseZero(missed, hn::Set(d, T(3))),
-                      d, finished.kind + o);
-            doneLanes |= laneBits(d, hn::Or(ended, missed)) << o;
-            hn::Store(tNext, d, s.t + o);
-            hn::Store(hn::IfThenElse(gap, tPrevious, t[j]), d, s.tOutside + o);
-            hn::Store(hn::IfThenElse(gap, radius, distance), d, s.radius + o);
-            hn::Store(hn::IfThenElse(gap, plainPrevious, plain), d, s.plainStep + o);
-            hn::Store(hn::IfThenElseZero(hn::AndNot(gap, relax), relaxed), d, s.lastStep + o);
-            hn::Store(confirming, d, s.confirming + o);
-            hn::Store(steps, d, s.steps + o);
-        }
-        for (; doneLanes != 0; doneLanes &= doneLanes - 1) {
-            const size_t lane = size_t(__builtin_ctzll(doneLanes));
-            TraceResult& r = results[size_t(s.ray[lane])];
-            r.steps = int(finished.c[lane]);
-            r.t = finished.a[lane];
-            if (finished.kind[lane] == T(1)) {
-                r.end = TraceEnd::Inside;
-                r.tOutside = finished.b[lane];
-            } else if (finished.kind[lane] == T(2)) {
-                r.end = TraceEnd::Grazing;
-                // A cone's last point may be inside for some of its rays; the one before is
-                // covered by an estimate's ball.
-                r.tOutside = march.cone ? finished.b[lane] : r.t;
-            }
-            s.load(lane, rays, next);
-        }
+        for (size_t j = 0; j < G; ++j)
+            stepCameraLanes(d, c, rayLanes, j * lanes, live[j], t[j], e[j], ends);
+        finishCameraRays(ends, c.cone, rayLanes, rays, next, results);
     };
-    marchBatch<kQuadratic>(d, k, s, rays, next, counters, marchStep);
+    marchBatch<kQuadratic>(d, k, rayLanes, rays, next, counters, marchStep);
 }
 
 // Shader::shadow (shade.cpp) for a batch of shadow rays, marched from t = 0.
@@ -191,11 +255,11 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
     const LaneConstants<D> k(d, fractal);
     const size_t lanes = hn::Lanes(d);
     visibility.assign(rays.size(), 1.0);
-    RayLanes<T> s;
-    LaneScratch<T> finished;
+    RayLanes<T> rayLanes;
+    QUATERNIA_LANE_ARRAY(T, endVisibility);  // of the rays that ended this step
     size_t next = 0;
     for (size_t lane = 0; lane < K * lanes; ++lane)
-        s.load(lane, rays, next, /*startAtZero=*/true);
+        rayLanes.load(lane, rays, next, /*startAtZero=*/true);
 
     const V zero = hn::Zero(d), one = hn::Set(d, T(1));
     const V minimumStep = hn::Set(d, T(march.minimumStep));
@@ -213,14 +277,15 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
             const size_t o = j * lanes;
             // Over-relaxation as Shader::shadow: where the balls of this point and the last do
             // not overlap, go back to the plain step.
-            const V radius = hn::Load(d, s.radius + o), lastStep = hn::Load(d, s.lastStep + o);
-            const V relaxation = hn::Load(d, s.relaxation + o);
+            const V radius = hn::Load(d, rayLanes.radius + o),
+                    lastStep = hn::Load(d, rayLanes.lastStep + o);
+            const V relaxation = hn::Load(d, rayLanes.relaxation + o);
             const auto gap =
                 hn::And(live[j], hn::And(relaxation > one, radius + e[j].distance < lastStep));
             const auto accepted = hn::AndNot(gap, live[j]);
             auto blocked = hn::And(accepted, hn::Or(e[j].inside, e[j].distance < blockDistance));
             // The penumbra: how nearly the ray grazed the set relative to how far it went.
-            V open = hn::Load(d, s.confirming + o);  // the running visibility of this ray
+            V open = hn::Load(d, rayLanes.visibility + o);
             if (march.soft) {
                 open = hn::IfThenElse(hn::And(accepted, t[j] > zero),
                                       hn::Min(open, softness * e[j].distance / t[j]), open);
@@ -234,62 +299,63 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
                                baseRelaxation);
             const V step = hn::IfThenElse(gap, radius, factor * newRadius);
             const V tNext = hn::IfThenElse(gap, t[j] + radius - lastStep, t[j] + step);
-            hn::Store(hn::IfThenElse(gap, radius, newRadius), d, s.radius + o);
-            hn::Store(step, d, s.lastStep + o);
-            hn::Store(hn::IfThenElse(gap, one, factor), d, s.relaxation + o);
-            const V steps = hn::Load(d, s.steps + o) + one;
-            auto cleared = hn::AndNot(
-                blocked,
-                hn::And(live[j], hn::Or(tNext >= hn::Load(d, s.tFar + o), steps >= maxSteps)));
+            hn::Store(hn::IfThenElse(gap, radius, newRadius), d, rayLanes.radius + o);
+            hn::Store(step, d, rayLanes.lastStep + o);
+            hn::Store(hn::IfThenElse(gap, one, factor), d, rayLanes.relaxation + o);
+            const V steps = hn::Load(d, rayLanes.steps + o) + one;
+            auto cleared =
+                hn::AndNot(blocked, hn::And(live[j], hn::Or(tNext >= hn::Load(d, rayLanes.tFar + o),
+                                                            steps >= maxSteps)));
             auto done = hn::Or(blocked, cleared);
-            hn::Store(tNext, d, s.t + o);
-            hn::Store(open, d, s.confirming + o);
-            hn::Store(steps, d, s.steps + o);
-            hn::Store(hn::IfThenZeroElse(blocked, march.soft ? open : one), d, finished.a + o);
+            hn::Store(tNext, d, rayLanes.t + o);
+            hn::Store(open, d, rayLanes.visibility + o);
+            hn::Store(steps, d, rayLanes.steps + o);
+            hn::Store(hn::IfThenZeroElse(blocked, march.soft ? open : one), d, endVisibility + o);
             doneLanes |= laneBits(d, done) << o;
         }
         for (; doneLanes != 0; doneLanes &= doneLanes - 1) {
             const size_t lane = size_t(__builtin_ctzll(doneLanes));
-            visibility[size_t(s.ray[lane])] = finished.a[lane];
-            s.load(lane, rays, next, /*startAtZero=*/true);
+            visibility[size_t(rayLanes.ray[lane])] = endVisibility[lane];
+            rayLanes.load(lane, rays, next, /*startAtZero=*/true);
         }
     };
-    marchBatch<kQuadratic>(d, k, s, rays, next, counters, marchStep);
+    marchBatch<kQuadratic>(d, k, rayLanes, rays, next, counters, marchStep);
 }
 
 // Fractal::estimate for a batch of points, lanes filled in order (the last chunk padded). With
-// kOrbit the whole PointEstimate; without, only the distance (0 inside) goes to store(begin,
-// count, distances).
+// kOrbit the whole PointEstimate; without, only the distance (0 inside): store(begin, count,
+// out) takes them from out, an EstimateLanes.
 template <bool kQuadratic, bool kOrbit, class D, class Store>
 void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& points,
                         LaneCounters& counters, const Store& store) {
     using T = hn::TFromD<D>;
     const LaneConstants<D> k(d, fractal);
     const size_t lanes = hn::Lanes(d);
-    LaneScratch<T> in, out;
+    Vector3Lanes<T> in;
+    EstimateLanes<T> out;
     for (size_t begin = 0; begin < points.size(); begin += lanes) {
         size_t count = std::min(lanes, points.size() - begin);
         in.gather(points, begin, count);
         const hn::Mask<D> live[1] = {hn::FirstN(d, count)};
-        const auto x = hn::Load(d, in.a), y = hn::Load(d, in.b), z = hn::Load(d, in.c);
+        const auto x = hn::Load(d, in.x), y = hn::Load(d, in.y), z = hn::Load(d, in.z);
         LaneEstimate<D> estimates[1];
         if (kQuadratic && k.threeNumbers) {
-            const QuaternionLanes<hn::Vec<D>> u[1] = {k.loopFromWorld(x, y, z)};
+            const QuaternionT<hn::Vec<D>> u[1] = {k.loopFromWorld(x, y, z)};
             estimateThreeNumbers<kOrbit>(d, k, u, live, estimates, counters);
         } else {
-            QuaternionLanes<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
+            QuaternionT<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
             estimateLanes<kQuadratic, kOrbit>(d, k, q, live, estimates, counters);
         }
         const LaneEstimate<D>& e = estimates[0];
         counters.estimates += int64_t(count);
-        hn::Store(e.distance, d, out.a);
+        hn::Store(e.distance, d, out.distance);
         if constexpr (kOrbit) {
-            hn::Store(hn::Sqrt(e.trapSquared), d, out.b);
-            hn::Store(e.iterations, d, out.c);
-            hn::Store(e.radiusSquared, d, out.kind);
-            hn::Store(hn::IfThenElseZero(e.inside, hn::Set(d, T(1))), d, in.kind);
+            hn::Store(hn::Sqrt(e.trapSquared), d, out.trap);
+            hn::Store(e.iterations, d, out.iterations);
+            hn::Store(e.radiusSquared, d, out.radiusSquared);
+            out.insideLanes = laneBits(d, e.inside);
         }
-        store(begin, count, in, out);
+        store(begin, count, out);
     }
 }
 
@@ -298,14 +364,14 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
                         std::vector<PointEstimate>& results, LaneCounters& counters) {
     results.assign(points.size(), PointEstimate{});
     estimatePointLanes<kQuadratic, true>(d, fractal, points, counters,
-                                         [&](size_t begin, size_t count, auto& in, auto& out) {
+                                         [&](size_t begin, size_t count, const auto& out) {
                                              for (size_t lane = 0; lane < count; ++lane) {
                                                  PointEstimate& r = results[begin + lane];
-                                                 r.distance = out.a[lane];
-                                                 r.trap = out.b[lane];
-                                                 r.iterations = int(out.c[lane]);
-                                                 r.radiusSquared = out.kind[lane];
-                                                 r.inside = in.kind[lane] != 0;
+                                                 r.distance = out.distance[lane];
+                                                 r.trap = out.trap[lane];
+                                                 r.iterations = int(out.iterations[lane]);
+                                                 r.radiusSquared = out.radiusSquared[lane];
+                                                 r.inside = (out.insideLanes >> lane) & 1;
                                              }
                                          });
 }
@@ -323,11 +389,12 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
     const LaneConstants<D> k(d, fractal);
     const size_t lanes = hn::Lanes(d);
     normals.assign(points.size(), Vector3d());
-    LaneScratch<T> in, out;
+    Vector3Lanes<T> in, gradient;
+    QUATERNIA_LANE_ARRAY(T, iterationCounts);  // M per lane
     for (size_t begin = 0; begin < points.size(); begin += lanes) {
         size_t count = std::min(lanes, points.size() - begin);
         in.gather(points, begin, count);
-        const V x = hn::Load(d, in.a), y = hn::Load(d, in.b), z = hn::Load(d, in.c);
+        const V x = hn::Load(d, in.x), y = hn::Load(d, in.y), z = hn::Load(d, in.z);
         V gx, gy, gz;  // the gradient along the slice's axes
         if (!iterations) {
             if constexpr (kQuadratic && sizeof(T) == 4) {
@@ -338,10 +405,10 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
             int most = 0;
             for (size_t lane = 0; lane < lanes; ++lane) {
                 int m = lane < count ? (*iterations)[begin + lane] : 0;
-                in.kind[lane] = T(m);
+                iterationCounts[lane] = T(m);
                 most = std::max(most, m);
             }
-            const V m = hn::Load(d, in.kind);
+            const V m = hn::Load(d, iterationCounts);
             const int fewest = int(hn::GetLane(hn::MinOfLanes(d, m)));
             if constexpr (kQuadratic && sizeof(T) == 4) {
                 threeNumberGradient(d, k, x, y, z, m, fewest, most, gx, gy, gz, counters);
@@ -350,26 +417,27 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
                                                counters);
             }
         }
-        hn::Store(gx, d, out.a);
-        hn::Store(gy, d, out.b);
-        hn::Store(gz, d, out.c);
+        hn::Store(gx, d, gradient.x);
+        hn::Store(gy, d, gradient.y);
+        hn::Store(gz, d, gradient.z);
         for (size_t lane = 0; lane < count; ++lane) {
-            Vector3d g(out.a[lane], out.b[lane], out.c[lane]);
+            Vector3d g(gradient.x[lane], gradient.y[lane], gradient.z[lane]);
             Point3d p(points.x[begin + lane], points.y[begin + lane], points.z[begin + lane]);
             normals[begin + lane] = normalOrOutward(g, p);
         }
     }
 }
 
-// Calls kernel(d, quadratic) with the fractal's precision as the lane tag and its form as a
-// std::bool_constant: each kernel in both precisions and both forms, chosen at run time.
-template <class Kernel>
-void run(const LaneFractal& fractal, const Kernel& kernel) {
+// Calls work(d, quadratic) with the fractal's precision as the lane tag and its form as a
+// std::bool_constant: each march and estimate in both precisions and both forms, chosen at run
+// time.
+template <class Work>
+void run(const LaneFractal& fractal, const Work& work) {
     auto withForm = [&](auto d) {
         if (fractal.degree == 2) {
-            kernel(d, std::true_type{});
+            work(d, std::true_type{});
         } else {
-            kernel(d, std::false_type{});
+            work(d, std::false_type{});
         }
     };
     if (fractal.precision == Precision::Double) {
@@ -402,8 +470,9 @@ void EstimateDistances(const LaneFractal& fractal, const PointBatch& points,
     distances.assign(points.size(), 0.0);
     run(fractal, [&](auto d, auto quadratic) {
         estimatePointLanes<quadratic(), false>(
-            d, fractal, points, counters, [&](size_t begin, size_t count, auto&, auto& out) {
-                std::copy(out.a, out.a + count, distances.begin() + std::ptrdiff_t(begin));
+            d, fractal, points, counters, [&](size_t begin, size_t count, const auto& out) {
+                std::copy(out.distance, out.distance + count,
+                          distances.begin() + std::ptrdiff_t(begin));
             });
     });
 }

@@ -1,4 +1,4 @@
-// SIMD kernels of shading_lanes.h, compiled once per instruction set by Highway's
+// The SIMD lanes of shading_lanes.h, compiled once per instruction set by Highway's
 // foreach_target and chosen at run time (HWY_DYNAMIC_DISPATCH), as march_lanes.cpp.
 
 #undef HWY_TARGET_INCLUDE
@@ -46,14 +46,14 @@ void EncodeDisplay(float* values, size_t pixels, float exposure, float inverseGa
         std::copy(tail, tail + 4 * (pixels - i), values + 4 * i);
     }
 }
-void LightSurfaceLanes(const LightConstants& k, SurfaceBatch& s) {
+void LightSurfaceLanes(const LightConstants& k, SurfaceBatch& surfaces) {
     const hn::ScalableTag<float> d;
     using V = hn::Vec<decltype(d)>;
     const size_t lanes = hn::Lanes(d);
     auto set = [&](float v) { return hn::Set(d, v); };
     const V zero = hn::Zero(d), tiny = set(1e-30f);
     auto light = [&](size_t i, auto load, auto store) {
-        const V nx = load(s.nx, i), ny = load(s.ny, i), nz = load(s.nz, i);
+        const V nx = load(surfaces.nx, i), ny = load(surfaces.ny, i), nz = load(surfaces.nz, i);
         const V key = hn::Max(
             zero,
             hn::MulAdd(nz, set(k.light[2]), hn::MulAdd(ny, set(k.light[1]), nx * set(k.light[0]))));
@@ -61,14 +61,15 @@ void LightSurfaceLanes(const LightConstants& k, SurfaceBatch& s) {
             zero,
             hn::MulAdd(nz, set(k.fill[2]), hn::MulAdd(ny, set(k.fill[1]), nx * set(k.fill[0]))));
         // The highlight: cos^shininess of the angle between the normal and the halfway vector.
-        const V hx = set(k.light[0]) - load(s.dx, i), hy = set(k.light[1]) - load(s.dy, i),
-                hz = set(k.light[2]) - load(s.dz, i);
+        const V hx = set(k.light[0]) - load(surfaces.dx, i),
+                hy = set(k.light[1]) - load(surfaces.dy, i),
+                hz = set(k.light[2]) - load(surfaces.dz, i);
         const V cosine = hn::MulAdd(nz, hz, hn::MulAdd(ny, hy, nx * hx)) /
                          hn::Sqrt(hn::MulAdd(hz, hz, hn::MulAdd(hy, hy, hx * hx)));
         const auto shines = hn::And(key > zero, cosine > set(k.highlightCutoff));
         const V highlight = hn::IfThenElseZero(
             shines, hn::Exp(d, set(k.shininess) * hn::Log(d, hn::Max(cosine, tiny))));
-        const V visibility = load(s.visibility, i), occlusion = load(s.occlusion, i);
+        const V visibility = load(surfaces.visibility, i), occlusion = load(surfaces.occlusion, i);
         const V direct = key * visibility;
         const V shine = set(k.specular) * highlight * visibility;
         const V fillLevel = fill * occlusion, ambientLevel = set(k.ambient) * occlusion;
@@ -78,11 +79,11 @@ void LightSurfaceLanes(const LightConstants& k, SurfaceBatch& s) {
                                      hn::MulAdd(fillLevel, set(k.fillColor[c]), ambientLevel));
             return hn::MulAdd(base, lit, shine * set(k.lightColor[c]));
         };
-        store(channel(s.albedoR, 0), s.red, i);
-        store(channel(s.albedoG, 1), s.green, i);
-        store(channel(s.albedoB, 2), s.blue, i);
+        store(channel(surfaces.albedoR, 0), surfaces.red, i);
+        store(channel(surfaces.albedoG, 1), surfaces.green, i);
+        store(channel(surfaces.albedoB, 2), surfaces.blue, i);
     };
-    const size_t count = s.size();
+    const size_t count = surfaces.size();
     size_t i = 0;
     auto loadU = [&](const std::vector<float>& v, size_t at) {
         return hn::LoadU(d, v.data() + at);

@@ -1,4 +1,4 @@
-// SIMD kernels of the per-pixel work after marching (shade.h): lighting many surface samples at
+// SIMD lanes for the per-pixel work after marching (shade.h): lighting many surface samples at
 // once and display encoding, compiled per instruction set by Highway like march_lanes.h and
 // chosen at run time. The scalar formulas they mirror are Shader::light and Shader::toDisplay.
 #pragma once
