@@ -1,6 +1,6 @@
 // The run-time half of Highway's dynamic dispatch for the quaternia executable.
 //
-// HWY_DYNAMIC_DISPATCH (march_lanes.cpp, shading_lanes.cpp) calls two functions at run
+// HWY_DYNAMIC_DISPATCH (camera_lanes.cpp and the other lanes) calls two functions at run
 // time, hwy::SupportedTargets and hwy::GetChosenTarget, which Debian's shared libhwy provides.
 // Loading that library also runs its static initialisers, among them a timer calibration
 // (hwy::platform::TimerResolution) that takes milliseconds: every command paid that before it

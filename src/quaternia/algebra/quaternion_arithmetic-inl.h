@@ -1,6 +1,6 @@
 // The ring operations of QuaternionT<T> (quaternion.h), for components T that satisfy
 // QuaternionComponent in the including namespace: quaternion.h includes this file into
-// namespace quaternia for real components, and the lane code (render/lanes/march_lanes.cpp)
+// namespace quaternia for real components, and the lane code (render/lanes/march_lanes-inl.h)
 // into each SIMD target's namespace for that target's vectors, where the operations take the
 // target's instructions. The constraints differ, so the two sets of overloads never compete.
 // No include guard, for that reason; each place includes it once.

@@ -1,6 +1,6 @@
 // The iteration formulas of the hot loops, written once for quaternions QuaternionT<V>
 // (quaternion.h) of any component type V: plain double in the scalar reference (distance.cpp)
-// and Highway SIMD vectors of float or double in the lanes (render/lanes/march_lanes.cpp). Only
+// and Highway SIMD vectors of float or double in the lanes (render/lanes/march_lanes-inl.h). Only
 // +, - and * are used, so every V with those operators runs the same formula; Hamilton's product
 // is quaternion.h's operator* (eqs. 2.7-2.9 of the seed paper).
 //

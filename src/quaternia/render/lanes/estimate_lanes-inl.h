@@ -1,8 +1,8 @@
-// The distance estimate in SIMD lanes, shared by the functions of march_lanes.cpp: the
+// The distance estimate in SIMD lanes, shared by the march lanes (march_lanes-inl.h): the
 // fractal's constants as lanes, JuliaSet::estimate for K vectors of points at once
 // (estimateLanes), and the estimates along the rays held in lanes (estimateAlongRays).
 //
-// Like julia_steps-inl.h, this file has no namespace of its own: march_lanes.cpp includes it
+// Like julia_steps-inl.h, this file has no namespace of its own: march_lanes-inl.h includes it
 // inside its per-target namespace, once per SIMD target (the HWY_TARGET_TOGGLE guard below lets
 // it in again for each), after hwy/highway.h, julia_steps-inl.h, lane_state.h and
 // march_lanes.h, with hn naming the target's Highway namespace.

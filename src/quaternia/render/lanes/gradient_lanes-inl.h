@@ -1,9 +1,9 @@
 // The analytic gradient of the potential in SIMD lanes (JuliaSet::potentialGradient): the
 // slice's three axes carried through the Jacobians of the iterates, for potentialNormalLanes
-// (march_lanes.cpp). Two forms: three numbers for float lanes of s z^2 + c, quaternions for
+// (march_lanes-inl.h). Two forms: three numbers for float lanes of s z^2 + c, quaternions for
 // the rest.
 //
-// Like estimate_lanes-inl.h, this file has no namespace of its own: march_lanes.cpp includes it
+// Like estimate_lanes-inl.h, this file has no namespace of its own: march_lanes-inl.h includes it
 // inside its per-target namespace, once per SIMD target, after estimate_lanes-inl.h.
 
 #if defined(QUATERNIA_GRADIENT_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)

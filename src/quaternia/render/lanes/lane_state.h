@@ -1,4 +1,4 @@
-// Per-lane bookkeeping of the SIMD lanes (march_lanes.cpp): aligned arrays that hold one
+// Per-lane bookkeeping of the SIMD lanes (march_lanes-inl.h): aligned arrays that hold one
 // value per lane, loaded into and stored from vectors each step, and the scalar refill of a lane
 // whose ray has finished. Plain C++ (no SIMD), shared by every instruction-set target.
 #pragma once

@@ -1,5 +1,5 @@
 // Rules of the march that the scalar marcher (render/march.h) and the lanes
-// (march_lanes.cpp) share. They live here, below both, so that the lanes need not include the
+// (march_lanes-inl.h) share. They live here, below both, so that the lanes need not include the
 // scalar marcher.
 #pragma once
 

@@ -1,5 +1,5 @@
 // The SIMD lanes of shading_lanes.h, compiled once per instruction set by Highway's
-// foreach_target and chosen at run time (HWY_DYNAMIC_DISPATCH), as march_lanes.cpp.
+// foreach_target and chosen at run time (HWY_DYNAMIC_DISPATCH), as camera_lanes.cpp.
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "quaternia/render/lanes/shading_lanes.cpp"
