@@ -33,7 +33,7 @@ ParameterValue fromNumbers(const Parameter& p, const std::vector<double>& number
 // The parameters the keys name, in table order, each with the keys that name it.
 struct Track {
     const Parameter* parameter;
-    std::vector<TrackKey> numericKeys;                       // numeric parameters
+    std::vector<TrackKey> numericKeys;                     // numeric parameters
     std::vector<std::pair<double, ParameterValue>> steps;  // text, choices and booleans
 };
 
@@ -46,7 +46,8 @@ std::vector<Track> tracksOf(const AnimationSettings& animation) {
                 if (name != p.name()) continue;
                 if (isNumeric(p))
                     track.numericKeys.push_back(
-                        {key.time, asNumbers(value), key.interpolation, key.shortest});
+                        {key.time, asNumbers(value),
+                         key.interpolation.value_or(animation.interpolation), key.shortest});
                 else
                     track.steps.emplace_back(key.time, value);
             }
@@ -67,13 +68,20 @@ ParameterValue stepValueAt(const std::vector<std::pair<double, ParameterValue>>&
 // Components (a, b) of H that a rotation plane turns, in (1, i, j, k) order.
 std::pair<int, int> planeAxes(RotationPlane plane) {
     switch (plane) {
-        case RotationPlane::OneI: return {0, 1};
-        case RotationPlane::OneJ: return {0, 2};
-        case RotationPlane::OneK: return {0, 3};
-        case RotationPlane::IJ: return {1, 2};
-        case RotationPlane::IK: return {1, 3};
-        case RotationPlane::JK: return {2, 3};
-        case RotationPlane::None: break;
+        case RotationPlane::OneI:
+            return {0, 1};
+        case RotationPlane::OneJ:
+            return {0, 2};
+        case RotationPlane::OneK:
+            return {0, 3};
+        case RotationPlane::IJ:
+            return {1, 2};
+        case RotationPlane::IK:
+            return {1, 3};
+        case RotationPlane::JK:
+            return {2, 3};
+        case RotationPlane::None:
+            break;
     }
     return {-1, -1};
 }
@@ -155,23 +163,23 @@ void validateAnimation(const Scene& scene) {
     const AnimationSettings& a = scene.animation;
     for (std::size_t i = 0; i < a.keys.size(); ++i) {
         const AnimationKey& key = a.keys[i];
-        std::string where = "animation key " + std::to_string(i + 1) + " (time " +
-                            formatValue(key.time) + ")";
+        std::string where =
+            "animation key " + std::to_string(i + 1) + " (time " + formatValue(key.time) + ")";
         if (!std::isfinite(key.time) || key.time < 0)
             throw UserError("animation.keys", where + ": time must be a number >= 0");
         if (i > 0 && !(key.time > a.keys[i - 1].time))
             throw UserError("animation.keys",
-                            where + ": keys must be in increasing time order with different "
-                                    "times (the key before is at " +
+                            where +
+                                ": keys must be in increasing time order with different "
+                                "times (the key before is at " +
                                 formatValue(a.keys[i - 1].time) + ")");
-        if (key.values.empty())
-            throw UserError("animation.keys", where + " names no parameter");
+        if (key.values.empty()) throw UserError("animation.keys", where + " names no parameter");
         for (const auto& [name, value] : key.values) {
             if (std::string problem = animatableProblem(name); !problem.empty())
                 throw UserError(name, where + ": " + problem);
             const Parameter& p = *findParameter(name);
             checkedValue(p, value);
-            if (!isNumeric(p) && key.interpolation != Interpolation::Step)
+            if (!isNumeric(p) && key.interpolation.value_or(a.interpolation) != Interpolation::Step)
                 throw UserError(name, where + ": " + name + " is " + describeType(p) +
                                           " and can change only at a key: give this key "
                                           "interpolation = \"step\"");

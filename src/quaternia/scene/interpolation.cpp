@@ -7,7 +7,9 @@
 namespace quaternia {
 namespace {
 
-double sign(double x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0; }
+double sign(double x) {
+    return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0;
+}
 
 // Hermite basis on one segment of length h at u in [0, 1], with end values y0, y1 and slopes
 // m0, m1 (per unit time).
@@ -76,7 +78,9 @@ std::vector<TrackKey> prepared(std::vector<TrackKey> keys, Motion motion) {
     return keys;
 }
 
-double smoothstep(double u) { return u * u * (3 - 2 * u); }
+double smoothstep(double u) {
+    return u * u * (3 - 2 * u);
+}
 
 }  // namespace
 

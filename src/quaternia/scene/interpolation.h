@@ -38,8 +38,7 @@ struct TrackKey {
 // The track's value at `time`: the first key's value before it, the last key's after it.
 // Requires at least one key, strictly increasing times and values of one dimension (the caller,
 // animation.cpp, checks those and reports them as user errors).
-std::vector<double> interpolateTrack(const std::vector<TrackKey>& keys, Motion motion,
-                                     double time);
+std::vector<double> interpolateTrack(const std::vector<TrackKey>& keys, Motion motion, double time);
 
 // Steffen's slopes of the points (times[i], values[i]), one per point.
 std::vector<double> monotoneSlopes(const std::vector<double>& times,

@@ -172,11 +172,11 @@ std::vector<Parameter> buildParameterTable() {
                                    "Quaternion l (1, i, j, k), made unit: a point p is drawn iff "
                                    "l * s(p) * r is in the set"),
                    Motion::Rotation),
-        withMotion(vectorParameter("slice", "right", &S::slice, &L::right, {1, 0, 0, 0}, -1000,
-                                   1000,
-                                   "Quaternion r (1, i, j, k), made unit: a point p is drawn iff "
-                                   "l * s(p) * r is in the set"),
-                   Motion::Rotation),
+        withMotion(
+            vectorParameter("slice", "right", &S::slice, &L::right, {1, 0, 0, 0}, -1000, 1000,
+                            "Quaternion r (1, i, j, k), made unit: a point p is drawn iff "
+                            "l * s(p) * r is in the set"),
+            Motion::Rotation),
         withMotion(vectorParameter("slice", "angles", &S::slice, &L::anglesDegrees,
                                    {0, 0, 0, 0, 0, 0}, -360, 360,
                                    "Extra 4D rotations of the slice in degrees, in the planes "

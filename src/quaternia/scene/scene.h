@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -129,7 +130,8 @@ struct CyclesSettings {
 // [[animation.keys]] tables (or --set animation.keys=[{...}, ...]); the rest are table parameters.
 struct AnimationKey {
     double time = 0;  // seconds from the film's start
-    Interpolation interpolation = Interpolation::Smooth;  // of the segments from this key
+    // Of the segments from this key; unset: animation.interpolation.
+    std::optional<Interpolation> interpolation;
     bool shortest = false;  // angles move from this key to their next by at most half a turn
     // "section.key" -> value, checked against the table and in canonical form.
     std::vector<std::pair<std::string, ParameterValue>> values;
