@@ -352,13 +352,13 @@ std::vector<Parameter> buildParameterTable() {
                          {"step", Interpolation::Step}},
                         "How values move from a key to the next, for keys that do not say: smooth "
                         "(through every key, no overshoot), linear, ease (stops at keys) or step"),
-        choiceParameter("animation", "turn_plane", &S::animation, &A::turnPlane, "none",
-                        rotationPlanes(true),
-                        "Turns the slice through 4D in this plane (slice.angles' planes; 1k or "
-                        "jk bring the hidden dimension into view) over the whole film"),
+        choiceParameter(
+            "animation", "turn_plane", &S::animation, &A::turnPlane, "none", rotationPlanes(true),
+            "Turns the slice through 4D in this plane over the whole film (slice.angles' "
+            "planes; 1k, ik or jk turn the hidden k axis into view)"),
         realParameter("animation", "turns", &S::animation, &A::turns, 1, -100, 100,
-                      "Full turns of animation.turn_plane over the film; 0.25 ends at the "
-                      "paper's g(qk) quarter-turn view"),
+                      "Full turns of animation.turn_plane over the film; a quarter turn in 1k "
+                      "shows what the slice hid, as the paper's g(qk) view does"),
         realParameter("animation", "orbit_turns", &S::animation, &A::orbitTurns, 0, -100, 100,
                       "Turns of the camera about camera.look_at, around camera.up, over the film"),
         choiceParameter("animation", "c_plane", &S::animation, &A::cPlane, "1i",
