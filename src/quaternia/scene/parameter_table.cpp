@@ -119,6 +119,20 @@ Parameter vectorParameter(std::string section, std::string key, Section Scene::*
     return p;
 }
 
+Parameter withMotion(Parameter p, Motion motion) {
+    p.motion = motion;
+    return p;
+}
+
+// The planes of rotation of H in slice.angles' order, for the animation's shortcuts.
+std::vector<std::pair<std::string, RotationPlane>> rotationPlanes(bool withNone) {
+    std::vector<std::pair<std::string, RotationPlane>> planes = {
+        {"1i", RotationPlane::OneI}, {"1j", RotationPlane::OneJ}, {"1k", RotationPlane::OneK},
+        {"ij", RotationPlane::IJ},   {"ik", RotationPlane::IK},   {"jk", RotationPlane::JK}};
+    if (withNone) planes.insert(planes.begin(), {"none", RotationPlane::None});
+    return planes;
+}
+
 }  // namespace
 
 std::vector<Parameter> buildParameterTable() {
@@ -132,6 +146,7 @@ std::vector<Parameter> buildParameterTable() {
     using M = MeshSettings;
     using O = OrbitSettings;
     using Y = CyclesSettings;
+    using A = AnimationSettings;
     return {
         // [fractal]
         textParameter("fractal", "formula", &S::fractal, &F::formula, "z^2 + c", 1, 1000,
@@ -153,16 +168,20 @@ std::vector<Parameter> buildParameterTable() {
         realParameter("slice", "distance", &S::slice, &L::distance, 0, -100, 100,
                       "Offset of the slice hyperplane along its normal; sweeping it morphs "
                       "through the 4D set"),
-        vectorParameter("slice", "left", &S::slice, &L::left, {1, 0, 0, 0}, -1000, 1000,
-                        "Quaternion l (1, i, j, k), made unit: a point p is drawn iff "
-                        "l * s(p) * r is in the set"),
-        vectorParameter("slice", "right", &S::slice, &L::right, {1, 0, 0, 0}, -1000, 1000,
-                        "Quaternion r (1, i, j, k), made unit: a point p is drawn iff "
-                        "l * s(p) * r is in the set"),
-        vectorParameter("slice", "angles", &S::slice, &L::anglesDegrees, {0, 0, 0, 0, 0, 0}, -360,
-                        360,
-                        "Extra 4D rotations of the slice in degrees, in the planes (1,i), "
-                        "(1,j), (1,k), (i,j), (i,k), (j,k)"),
+        withMotion(vectorParameter("slice", "left", &S::slice, &L::left, {1, 0, 0, 0}, -1000, 1000,
+                                   "Quaternion l (1, i, j, k), made unit: a point p is drawn iff "
+                                   "l * s(p) * r is in the set"),
+                   Motion::Rotation),
+        withMotion(
+            vectorParameter("slice", "right", &S::slice, &L::right, {1, 0, 0, 0}, -1000, 1000,
+                            "Quaternion r (1, i, j, k), made unit: a point p is drawn iff "
+                            "l * s(p) * r is in the set"),
+            Motion::Rotation),
+        withMotion(vectorParameter("slice", "angles", &S::slice, &L::anglesDegrees,
+                                   {0, 0, 0, 0, 0, 0}, -360, 360,
+                                   "Extra 4D rotations of the slice in degrees, in the planes "
+                                   "(1,i), (1,j), (1,k), (i,j), (i,k), (j,k)"),
+                   Motion::Angle),
         // [camera]
         vectorParameter("camera", "position", &S::camera, &C::position, {1.25, 1.875, -5}, -1e4,
                         1e4, "Camera location in world space (POV-Ray's location)"),
@@ -275,8 +294,10 @@ std::vector<Parameter> buildParameterTable() {
                         "basins the complex number x + y i"),
         realParameter("plane", "width", &S::plane, &P::width, 4, 1e-12, 1e6,
                       "Width of the view in plane units (the height follows the image's aspect)"),
-        realParameter("plane", "rotation", &S::plane, &P::rotationDegrees, 0, -360, 360,
-                      "Counter-clockwise rotation of the view about its centre, in degrees"),
+        withMotion(realParameter("plane", "rotation", &S::plane, &P::rotationDegrees, 0, -360, 360,
+                                 "Counter-clockwise rotation of the view about its centre, in "
+                                 "degrees"),
+                   Motion::Angle),
         integerParameter("plane", "max_iterations", &S::plane, &P::maxIterations, 256, 1, 1000000,
                          "Iterations of every plane kind before a point counts as inside (the 3D "
                          "render's fractal.max_iterations is usually far fewer)"),
@@ -315,6 +336,37 @@ std::vector<Parameter> buildParameterTable() {
         integerParameter("cycles", "period", &S::cycles, &Y::period, 1, 1, 10,
                          "`quaternia cycles`: the period n whose periodic points are listed; "
                          "degree^n must be at most 1024"),
+        // [animation]: keys are [[animation.keys]] tables (scene_file.h), not table entries
+        realParameter("animation", "fps", &S::animation, &A::fps, 30, 0.01, 1000,
+                      "Frames per second of `quaternia animate`; frame n is at (n - 1) / fps "
+                      "seconds"),
+        realParameter("animation", "duration", &S::animation, &A::duration, 0, 0, 86400,
+                      "Length of the film in seconds; 0 takes it from animation.frames, or else "
+                      "ends the film at the last key"),
+        integerParameter("animation", "frames", &S::animation, &A::frames, 0, 0, 1000000,
+                         "Number of frames; 0 means duration * fps"),
+        choiceParameter("animation", "interpolation", &S::animation, &A::interpolation, "smooth",
+                        {{"smooth", Interpolation::Smooth},
+                         {"linear", Interpolation::Linear},
+                         {"ease", Interpolation::Ease},
+                         {"step", Interpolation::Step}},
+                        "How values move from a key to the next, for keys that do not say: smooth "
+                        "(through every key, no overshoot), linear, ease (stops at keys) or step"),
+        choiceParameter(
+            "animation", "turn_plane", &S::animation, &A::turnPlane, "none", rotationPlanes(true),
+            "Turns the slice through 4D in this plane over the whole film (slice.angles' "
+            "planes; 1k, ik or jk turn the hidden k axis into view)"),
+        realParameter("animation", "turns", &S::animation, &A::turns, 1, -100, 100,
+                      "Full turns of animation.turn_plane over the film; a quarter turn in 1k "
+                      "shows what the slice hid, as the paper's g(qk) view does"),
+        realParameter("animation", "orbit_turns", &S::animation, &A::orbitTurns, 0, -100, 100,
+                      "Turns of the camera about camera.look_at, around camera.up, over the film"),
+        choiceParameter("animation", "c_plane", &S::animation, &A::cPlane, "1i",
+                        rotationPlanes(false),
+                        "Plane of H in which c travels its circle (animation.c_radius)"),
+        realParameter("animation", "c_radius", &S::animation, &A::cRadius, 0, 0, 10,
+                      "c travels once around a circle of this radius about fractal.c over the "
+                      "film; 0 keeps c still"),
     };
 }
 

@@ -20,9 +20,6 @@
 
 namespace quaternia {
 
-// Reals are double, integers int64_t, choices and text std::string, vectors std::vector<double>.
-using ParameterValue = std::variant<double, int64_t, bool, std::string, std::vector<double>>;
-
 enum class ParameterType {
     Real,
     Integer,
@@ -49,6 +46,7 @@ struct Parameter {
     std::vector<std::string> choices;      // Choice: the allowed words, in display order
     std::vector<int64_t> allowedIntegers;  // Integer: if not empty, the only allowed values
     std::string help;                      // one line, for --help, scene files and tooltips
+    Motion motion = Motion::Numeric;       // how an animation moves it between keys
 
     // apply expects a canonical, checked value (see checkedValue); read returns one.
     std::function<void(Scene&, const ParameterValue&)> apply;

@@ -5,14 +5,24 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
+#include <variant>
+#include <vector>
 
 #include "quaternia/algebra/quaternion.h"
 #include "quaternia/algebra/vecmath.h"
+#include "quaternia/scene/interpolation.h"
 
 namespace quaternia {
 
 using Color = Vector3d;  // linear RGB
+
+// The value of one parameter of the table (parameters.h): reals are double, integers int64_t,
+// choices and text std::string, vectors std::vector<double>.
+using ParameterValue = std::variant<double, int64_t, bool, std::string, std::vector<double>>;
 
 struct FractalSettings {
     std::string formula;  // eq. 2.10 polynomial in z; the name c stands for `c` below
@@ -116,6 +126,33 @@ struct CyclesSettings {
     int period = 0;
 };
 
+// [animation] (animation.h): a film of the scene. Keys come from the scene file's
+// [[animation.keys]] tables (or --set animation.keys=[{...}, ...]); the rest are table parameters.
+struct AnimationKey {
+    double time = 0;  // seconds from the film's start
+    // Of the segments from this key; unset: animation.interpolation.
+    std::optional<Interpolation> interpolation;
+    bool shortest = false;  // angles move from this key to their next by at most half a turn
+    // "section.key" -> value, checked against the table and in canonical form.
+    std::vector<std::pair<std::string, ParameterValue>> values;
+};
+
+// A plane of rotation of H, in slice.angles' order; None for no motion.
+enum class RotationPlane { None, OneI, OneJ, OneK, IJ, IK, JK };
+
+struct AnimationSettings {
+    double fps = 0;
+    double duration = 0;  // seconds; 0: from `frames`, or else up to the last key
+    int frames = 0;       // 0: duration * fps
+    Interpolation interpolation = Interpolation::Smooth;  // for keys that do not name one
+    RotationPlane turnPlane = RotationPlane::None;        // the hidden dimension's turn
+    double turns = 0;
+    double orbitTurns = 0;  // camera turns about camera.look_at
+    RotationPlane cPlane = RotationPlane::OneI;
+    double cRadius = 0;  // c travels a circle of this radius about fractal.c
+    std::vector<AnimationKey> keys;
+};
+
 struct Scene {
     FractalSettings fractal;
     SliceSettings slice;
@@ -126,6 +163,7 @@ struct Scene {
     MeshSettings mesh;
     OrbitSettings orbit;
     CyclesSettings cycles;
+    AnimationSettings animation;
 };
 
 }  // namespace quaternia

@@ -11,62 +11,17 @@
 
 #include <toml++/toml.h>
 
+#include "quaternia/scene/animation_file.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/toml_values.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
 
 namespace {
 
-// ---- TOML -> ParameterValue -------------------------------------------------------------------
-
-// Integers, floats, booleans, strings and arrays of numbers (integers and floats mixed, read
-// as reals); nothing for tables, dates, times and other arrays.
-std::optional<ParameterValue> toParameterValue(const toml::node& node) {
-    // Built in place: moving a variant temporary into the optional trips GCC 12's
-    // -Wmaybe-uninitialized false positive in optimised sanitizer builds.
-    auto value = [](auto&& x) {
-        return std::optional<ParameterValue>(std::in_place, std::forward<decltype(x)>(x));
-    };
-    if (const auto* integer = node.as_integer()) return value(int64_t(integer->get()));
-    if (const auto* real = node.as_floating_point()) return value(double(real->get()));
-    if (const auto* boolean = node.as_boolean()) return value(bool(boolean->get()));
-    if (const auto* text = node.as_string()) return value(std::string(text->get()));
-    if (const auto* array = node.as_array()) {
-        std::vector<double> numbers;
-        for (const auto& element : *array) {
-            if (const auto* integer = element.as_integer())
-                numbers.push_back(double(integer->get()));
-            else if (const auto* real = element.as_floating_point())
-                numbers.push_back(real->get());
-            else
-                return std::nullopt;
-        }
-        return value(std::move(numbers));
-    }
-    return std::nullopt;
-}
-
-// What a value that toParameterValue could not read was, for messages.
-std::string describeNode(const toml::node& node) {
-    if (auto value = toParameterValue(node)) return formatValue(*value);
-    if (const auto* array = node.as_array()) {
-        std::string out = "[";
-        for (std::size_t i = 0; i < array->size(); ++i)
-            out += (i ? ", " : "") + describeNode(*array->get(i));
-        return out + "]";
-    }
-    if (node.is_table()) return "a table";
-    if (node.is_date()) return "a date";
-    if (node.is_time()) return "a time";
-    return "a date-time";
-}
-
-// "scene.toml:3:7: "
-std::string location(const std::string& sourceName, const toml::source_position& where) {
-    return sourceName + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
-           ": ";
-}
+// [[animation.keys]]: the one entry of a section that is not a parameter (animation_file.h).
+constexpr std::string_view kAnimationKeys = "animation.keys";
 
 bool isSection(std::string_view name) {
     const auto& sections = parameterSections();
@@ -103,6 +58,11 @@ std::vector<Entry> entriesInFileOrder(const toml::table& root) {
 
 void applyEntry(Scene& scene, const Entry& entry, const std::string& sourceName) {
     std::string at = location(sourceName, entry.where);
+    if (entry.name == kAnimationKeys) {
+        scene.animation.keys =
+            parseAnimationKeys(*entry.value, sourceName, scene.animation.interpolation);
+        return;
+    }
     if (isSection(entry.name))
         throw UserError(entry.name, at + "'" + entry.name + "' must be a section: write [" +
                                         entry.name + "] above its keys");
@@ -188,6 +148,10 @@ void applyOverride(Scene& scene, std::string_view assignment) {
                         "--set expects section.key=value, got '" + std::string(assignment) + "'");
     std::string name = trim(assignment.substr(0, equals));
     std::string raw = trim(assignment.substr(equals + 1));
+    if (name == kAnimationKeys) {
+        scene.animation.keys = parseAnimationKeysText(raw, scene.animation.interpolation);
+        return;
+    }
 
     ParameterValue value = raw;
     if (auto parsed = parseTomlValue(raw)) {
@@ -206,10 +170,15 @@ std::string sceneToToml(const Scene& scene) {
         "# `quaternia render --help`.\n";
     std::string section;
     for (const Parameter& p : parameterTable()) {
-        if (p.section != section) out += "\n[" + (section = p.section) + "]\n";
+        if (p.section != section) {
+            // The keys close the animation section, as the array of tables they are.
+            if (section == "animation") out += animationKeysToToml(scene.animation.keys);
+            out += "\n[" + (section = p.section) + "]\n";
+        }
         out += "# " + p.help + " (" + describeRange(p) + ")\n";
         out += p.key + " = " + formatValue(p.read(scene)) + "\n";
     }
+    if (section == "animation") out += animationKeysToToml(scene.animation.keys);
     return out;
 }
 
