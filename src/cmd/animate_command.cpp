@@ -155,6 +155,7 @@ int renderFilm(const AnimateCommandOptions& options, const Scene& film, int64_t 
             }
         },
         1);
+    RenderWorkspace workspace;  // the threads' lane renderers, kept from frame to frame
     InterruptScope interrupt;
     ProgressBar bar("animating", !options.json && ProgressBar::stderrIsTerminal());
     bool interrupted = false;
@@ -169,6 +170,7 @@ int renderFilm(const AnimateCommandOptions& options, const Scene& film, int64_t 
         RenderOptions renderOptions;
         renderOptions.threads = options.threads;
         renderOptions.cancel = interrupt.flag();
+        renderOptions.workspace = &workspace;
         const double done = double(next), total = double(toRender.size());
         renderOptions.progress = [&bar, done, total](double fraction) {
             bar.update((done + fraction) / total);
