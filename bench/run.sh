@@ -44,6 +44,33 @@ scene default-1080p-scalar --width 1920 --height 1080 "${one_spp[@]}" --set rend
 scene default-preview-360p --width 640 --height 360 "${one_spp[@]}"
 scene default-720p-4spp
 scene case01-shaded-1080p bench/scenes/case01_sqr_A_shaded.toml
+# Films (`quaternia animate`): the hidden-turn preset at 1 sample on 2 threads, frames per second
+# end to end (every PNG written, the process start left out) and of the render loop alone (the
+# sum of the frames' render seconds); the ratio is how much of the render speed the film keeps
+# (the writer thread encodes and writes frame n while frame n + 1 renders).
+film() {  # name, frames, then quaternia animate arguments
+  local name=$1 frames=$2; shift 2
+  : > "$out/films.jsonl"
+  for _ in $(seq "$runs"); do
+    "$binary" animate --preset hidden-turn --frames "1-$frames" --overwrite --threads 2 \
+      --set render.samples=1 "$@" --json -o "$out/film" >> "$out/films.jsonl"
+  done
+  python3 -c '
+import json, statistics, sys
+runs = [json.loads(line) for line in sys.stdin]
+end_to_end = statistics.median(r["frames_rendered"] / r["seconds"] for r in runs)
+loop = statistics.median(r["frames_rendered"] / r["render_seconds"] for r in runs)
+r = runs[0]
+print("%-24s %-10s %6.1f frames/s end to end %6.1f frames/s render loop  ratio %3.0f%%  (%d frames, median of %d, %d threads)"
+      % (sys.argv[1], "%dx%d" % (r["width"], r["height"]), end_to_end, loop, 100 * end_to_end / loop,
+         r["frames_rendered"], len(runs), r["threads"]))
+' "$name" < "$out/films.jsonl"
+}
+echo
+echo "film                     size"
+film hidden-turn-360p 60 --width 640 --height 360
+film hidden-turn-1080p 12 --width 1920 --height 1080
+
 # Meshes of the default scene: median time and peak memory (GNU time's maximum resident set).
 mesh() {  # resolution
   : > "$out/meshes.txt"

@@ -60,6 +60,15 @@ def check_commands(binary, work):
                 lane_utilisation=(int, float))
     check(report["depth_output"] is None, what + ": depth_output is null without --depth")
 
+    report, what = run(binary, "animate", "--json", "-o", os.path.join(work, "frames"),
+                       "--preset", "hidden-turn", "--set", "animation.duration=0.1", "--width",
+                       "8", "--height", "6", "--set", "render.samples=1", "--set", C_SET)
+    check_types(report, what, command=str, output=str, film_frames=int, first_frame=int,
+                last_frame=int, frames_rendered=int, frames_skipped=int, seconds=float,
+                frames_per_second=float, render_seconds=float, fps=float, width=int, threads=int)
+    check(report["frames_rendered"] == 3, "%s: %r frames" % (what, report["frames_rendered"]))
+    check(report["video"] is None, what + ": video is null without --video")
+
     report, what = run(binary, "plane", "--json", "-o", os.path.join(work, "p.png"), "--width",
                        "8", "--height", "6", "--set", C_SET)
     check(report["c"] == C, "%s: c = %r" % (what, report["c"]))
@@ -146,7 +155,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="quaternia-json-") as work:
         check_commands(binary, work)
         check_explorer(binary, work)
-    print("json output test: render, plane, mesh, orbit, cycles and explore read back")
+    print("json output test: render, animate, plane, mesh, orbit, cycles and explore read back")
 
 
 if __name__ == "__main__":

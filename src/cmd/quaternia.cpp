@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cmd/animate_command.h"
 #include "cmd/cli_boundary.h"
 #include "cmd/cycles_command.h"
 #include "cmd/explore_command.h"
@@ -25,13 +26,15 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", "quaternia 0.1.0");
     app.footer(
-        "Run `quaternia COMMAND --help` for a command's options (render, plane, mesh, orbit, "
-        "cycles, explore).\n\nScene "
+        "Run `quaternia COMMAND --help` for a command's options (render, animate, plane, mesh, "
+        "orbit, cycles, explore).\n\nScene "
         "keys (scene file "
         "sections, or --set section.key=value):\n" +
         parameterHelp() + "\n" + presetHelp());
     RenderCommandOptions renderOptions;
     addRenderCommand(app, renderOptions);
+    AnimateCommandOptions animateOptions;
+    addAnimateCommand(app, animateOptions);
     OrbitCommandOptions orbitOptions;
     addOrbitCommand(app, orbitOptions);
     CyclesCommandOptions cyclesOptions;
@@ -45,6 +48,7 @@ int main(int argc, char** argv) {
     if (auto code = parseCommandLine(app, argc, argv, "quaternia")) return *code;
     return runAtBoundary([&] {
         if (app.got_subcommand("render")) return runRenderCommand(renderOptions);
+        if (app.got_subcommand("animate")) return runAnimateCommand(animateOptions);
         if (app.got_subcommand("orbit")) return runOrbitCommand(orbitOptions);
         if (app.got_subcommand("cycles")) return runCyclesCommand(cyclesOptions);
         if (app.got_subcommand("plane")) return runPlaneCommand(planeOptions);

@@ -3,8 +3,7 @@
 #include <cstdio>
 
 #include "quaternia/fractal/fractal.h"
-#include "quaternia/image/png_io.h"
-#include "quaternia/render/render.h"
+#include "quaternia/render/render_png.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/util/atomic_file.h"
@@ -69,22 +68,17 @@ int runRenderCommand(const RenderCommandOptions& options) {
     std::optional<AtomicFile> depthOutput;
     if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);
 
-    RenderResult result = runInterruptibly("rendering", options, [&](const WorkOptions& work) {
+    PngRender result = runInterruptibly("rendering", options, [&](const WorkOptions& work) {
         RenderOptions renderOptions{work};
         renderOptions.depth = depthOutput.has_value();
-        // Opaque frames come as PNG samples, quantised tile by tile (no float image at all).
-        renderOptions.opaqueSamples = true;
-        return render(scene, renderOptions);
+        return renderPng(scene, renderOptions);
     });
     if (!result.completed) return reportInterrupted();
 
-    auto png = result.samples.empty() ? encodePng(result.image, scene.render.bitDepth)
-                                      : writePngBytes(result.samplesFormat, result.samples);
-    output.write(png.data(), png.size());
+    output.write(result.png);
     output.commit();
     if (depthOutput) {
-        auto depthPng = encodeGrayPng16(result.depth);
-        depthOutput->write(depthPng.data(), depthPng.size());
+        depthOutput->write(result.depthPng);
         depthOutput->commit();
     }
     printSummary(options, scene, result.stats);

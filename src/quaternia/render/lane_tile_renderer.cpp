@@ -12,14 +12,27 @@ LaneTileRenderer::LaneTileRenderer(const LaneFractal& lanes, const Camera& camer
                                    const Shader& shader, const MarchSettings& march, int samples,
                                    bool shadowCylinders)
     : lanes_(lanes),
-      camera_(camera),
-      shader_(shader),
+      camera_(&camera),
+      shader_(&shader),
       march_{march.epsilon, march.pixelAngle, march.maxSteps, march.relaxation},
       samples_(samples),
       shadowCylinders_(shadowCylinders),
       boundingRadius_(std::sqrt(lanes.bailoutSquared)),
       lightConstants_(shader.lightConstants()),
       coneRatio_(coneRatio(camera)) {}
+
+void LaneTileRenderer::rebind(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
+                              const MarchSettings& march, int samples) {
+    // Everything the constructor takes from the frame; the batches are sized tile by tile.
+    lanes_ = lanes;
+    camera_ = &camera;
+    shader_ = &shader;
+    march_ = {march.epsilon, march.pixelAngle, march.maxSteps, march.relaxation};
+    samples_ = samples;
+    boundingRadius_ = std::sqrt(lanes.bailoutSquared);
+    lightConstants_ = shader.lightConstants();
+    coneRatio_ = coneRatio(camera);
+}
 
 double LaneTileRenderer::coneRatio(const Camera& camera) {
     // The cone about a block's central ray holds every ray through the block: points at the same
@@ -72,7 +85,7 @@ void LaneTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixel
                 rowRays_.resize(size_t(width));
                 for (int px = tile.x0; px < tile.x1; ++px) {
                     auto [sx, sy] = samplePosition(k, samples_, px, py);
-                    const Ray ray = camera_.generateRay(px + sx, py + sy);
+                    const Ray ray = camera_->generateRay(px + sx, py + sy);
                     RowRay& r = rowRays_[size_t(px - tile.x0)];
                     r.direction = ray.direction;
                     auto interval = intersectSphere(ray, boundingRadius_);
@@ -88,7 +101,7 @@ void LaneTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixel
                 const double near = std::max(r.tNear, start);
                 // Not r.tNear <= r.tFar: the sphere missed, or the cone found nothing on it.
                 if (!(near <= r.tFar)) continue;
-                rays_.push(Ray{camera_.position(), r.direction}, near, r.tFar);
+                rays_.push(Ray{camera_->position(), r.direction}, near, r.tFar);
                 rayPixel_.push_back((py - tile.y0) * width + (px - tile.x0));
                 rayBlock_.push_back(rowBlock + column);
             }
@@ -126,8 +139,8 @@ void LaneTileRenderer::rowRays(const Tile& tile, int py, const double* blockStar
     const int width = tile.x1 - tile.x0;
     const int blocks = (width + kConeBlock - 1) / kConeBlock;
     rowRays_.resize(size_t(width));
-    const Camera::RowDirections row = camera_.rowDirections(py);
-    const Point3d& o = camera_.position();
+    const Camera::RowDirections row = camera_->rowDirections(py);
+    const Point3d& o = camera_->position();
     const double c = dot(o, o) - boundingRadius_ * boundingRadius_;
     RowRay* out = rowRays_.data();
     constexpr double kMissed = std::numeric_limits<double>::infinity();
@@ -168,7 +181,7 @@ void LaneTileRenderer::marchCones(const Tile& tile, LaneTileStats& stats) {
             const double x0 = tile.x0 + bx * kConeBlock, y0 = tile.y0 + by * kConeBlock;
             const double x1 = std::min<double>(x0 + kConeBlock, tile.x1);
             const double y1 = std::min<double>(y0 + kConeBlock, tile.y1);
-            centres.push_back(camera_.generateRay(0.5 * (x0 + x1), 0.5 * (y0 + y1)));
+            centres.push_back(camera_->generateRay(0.5 * (x0 + x1), 0.5 * (y0 + y1)));
         }
     }
     const double ratio = coneRatio_;
@@ -210,7 +223,7 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
     // The estimate at each hit's outside point, where the orbit colours the surface: its
     // iteration count is then the M of the analytic normal (JuliaSet::gradientIterations).
     // Without orbit colouring, the normals find their M themselves.
-    const bool orbit = shader_.albedoUsesOrbit();
+    const bool orbit = shader_->albedoUsesOrbit();
     if (orbit) {
         estimatePoints(lanes_, hitPoints_, hitEstimates_, stats.shading);
         gradientIterations_.resize(count);
@@ -226,20 +239,20 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
     for (size_t h = 0; h < count; ++h) {
         Vector3d& n = normals_[h];
         if (dot(n, hits_[h].direction) > 0) n = -n;  // seen from inside a thin sheet
-        if (shader_.shadows() == Shadows::None || !(shader_.keyDiffuse(n) > 0)) continue;
+        if (shader_->shadows() == Shadows::None || !(shader_->keyDiffuse(n) > 0)) continue;
         Point3d origin =
-            shader_.shadowOrigin(hits_[h].outside, n, camera_.pixelFootprint(hits_[h].t));
-        Ray ray{origin, shader_.lightDirection()};
+            shader_->shadowOrigin(hits_[h].outside, n, camera_->pixelFootprint(hits_[h].t));
+        Ray ray{origin, shader_->lightDirection()};
         auto interval = intersectSphere(ray, boundingRadius_);
         if (!interval) continue;
         shadowRays_.push(ray, 0, interval->tFar);
         shadowHit_.push_back(int(h));
     }
-    if (shadowCylinders_ && shader_.shadows() == Shadows::Hard) clipShadowRays(stats);
+    if (shadowCylinders_ && shader_->shadows() == Shadows::Hard) clipShadowRays(stats);
     ShadowMarch shadowMarch;
-    shadowMarch.minimumStep = shader_.shadowMinimumStep();
-    shadowMarch.softness = shader_.shadowSoftness();
-    shadowMarch.soft = shader_.shadows() == Shadows::Soft;
+    shadowMarch.minimumStep = shader_->shadowMinimumStep();
+    shadowMarch.softness = shader_->shadowSoftness();
+    shadowMarch.soft = shader_->shadows() == Shadows::Soft;
     shadowMarch.maxSteps = Shader::kShadowSteps;
     shadowMarch.relaxation = Shader::kShadowRelaxation;
     shadowMarch.maxRelaxation = Shader::kShadowMaxRelaxation;
@@ -253,11 +266,11 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
         }
     }
 
-    if (shader_.occlusionEnabled()) {
+    if (shader_->occlusionEnabled()) {
         occlusionPoints_.clear();
         for (size_t h = 0; h < count; ++h) {
             for (int k = 1; k <= Shader::kOcclusionSamples; ++k)
-                occlusionPoints_.push(hits_[h].outside + normals_[h] * shader_.occlusionHeight(k));
+                occlusionPoints_.push(hits_[h].outside + normals_[h] * shader_->occlusionHeight(k));
         }
         estimateDistances(lanes_, occlusionPoints_, occlusionDistances_, stats.shading);
     }
@@ -272,22 +285,22 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
         if (orbit) {
             const PointEstimate& e = hitEstimates_[h];
             orbitOfHit.trap = e.trap;
-            if (shader_.albedoUsesSmoothIteration()) {
+            if (shader_->albedoUsesSmoothIteration()) {
                 orbitOfHit.smoothIteration =
                     e.inside ? lanes_.maxIterations
                              : smoothEscapeCount(e.iterations, e.radiusSquared, lanes_.degree);
             }
         }
-        const Color albedo = shader_.albedo(orbitOfHit);
+        const Color albedo = shader_->albedo(orbitOfHit);
         double visibility = 1;  // no shadows, or the shadow ray leaves the bounding sphere
-        if (!(shader_.keyDiffuse(n) > 0)) {
+        if (!(shader_->keyDiffuse(n) > 0)) {
             visibility = 0;
         } else if (nextShadow < shadowHit_.size() && shadowHit_[nextShadow] == int(h)) {
-            visibility = shader_.visibilityFromMarch(shadowVisibility_[nextShadow++]);
+            visibility = shader_->visibilityFromMarch(shadowVisibility_[nextShadow++]);
         }
         double occlusion = 1;
-        if (shader_.occlusionEnabled()) {
-            occlusion = shader_.ambientFromOpenness(shader_.occlusionFromEstimates(
+        if (shader_->occlusionEnabled()) {
+            occlusion = shader_->ambientFromOpenness(shader_->occlusionFromEstimates(
                 occlusionDistances_.data() + h * Shader::kOcclusionSamples));
         }
         SurfaceBatch& s = surfaces_;
@@ -325,7 +338,7 @@ void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
     for (size_t r = 0; r < count; ++r)
         shadowOrder_[size_t(blockFill_[blockOf(r)]++)] = int(r);
 
-    const Vector3d light = shader_.lightDirection();
+    const Vector3d light = shader_->lightDirection();
     auto origin = [&](size_t r) {
         return Point3d(shadowRays_.ox[r], shadowRays_.oy[r], shadowRays_.oz[r]);
     };

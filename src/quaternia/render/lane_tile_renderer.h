@@ -36,6 +36,11 @@ class LaneTileRenderer {
     LaneTileRenderer(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
                      const MarchSettings& march, int samples, bool shadowCylinders = true);
 
+    // The renderer of another frame, its batches kept: the same pixels as a new one would
+    // make (shadowCylinders stays).
+    void rebind(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
+                const MarchSettings& march, int samples);
+
     // Marches and shades every sample of every pixel of the tile; pixels[(y - y0) * width +
     // (x - x0)] receives the sums of pixel (x, y).
     void render(const Tile& tile, std::vector<PixelSamples>& pixels, LaneTileStats& stats);
@@ -57,8 +62,8 @@ class LaneTileRenderer {
     void clipShadowRays(LaneTileStats& stats);
 
     LaneFractal lanes_;
-    const Camera& camera_;
-    const Shader& shader_;
+    const Camera* camera_;
+    const Shader* shader_;
     CameraMarch march_;
     int samples_;
     bool shadowCylinders_;

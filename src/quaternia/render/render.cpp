@@ -39,6 +39,7 @@ double unitFromHash(uint32_t h) {
 struct alignas(64) ThreadTotals {
     RenderStats stats;
     std::unique_ptr<LaneTileRenderer> laneTiles;  // the SIMD path's batches
+    bool laneTilesBound = false;                  // to this call's frame
     std::vector<PixelSamples> pixels;
     std::vector<Rgba> row;  // a tile's row on its way to RenderResult::samples
 };
@@ -234,7 +235,10 @@ void FrameRenderer::renderTileInLanes(const Tile& tile, ThreadTotals& thread) co
     if (!thread.laneTiles) {
         thread.laneTiles =
             std::make_unique<LaneTileRenderer>(*lanes_, camera_, shader_, march_, samples_);
+    } else if (!thread.laneTilesBound) {
+        thread.laneTiles->rebind(*lanes_, camera_, shader_, march_, samples_);
     }
+    thread.laneTilesBound = true;
     LaneTileStats tileStats;
     thread.laneTiles->render(tile, thread.pixels, tileStats);
     thread.stats += statsOf(tileStats, int64_t(samples_) * int64_t(thread.pixels.size()));
@@ -293,6 +297,13 @@ void FrameRenderer::finishRowsOnBackgroundRows(const Tile& tile, ThreadTotals& t
 
 }  // namespace
 
+struct RenderWorkspace::Threads {
+    std::vector<ThreadTotals> totals;
+};
+
+RenderWorkspace::RenderWorkspace() : threads_(std::make_unique<Threads>()) {}
+RenderWorkspace::~RenderWorkspace() = default;
+
 std::array<double, 2> samplePosition(int k, int n, int px, int py) {
     if (n == 1) return {0.5, 0.5};
     int columns = int(std::ceil(std::sqrt(double(n))));
@@ -328,7 +339,14 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     const FrameRenderer frame(scene, options, result);
     result.stats.engine = frame.engine();
     const ParallelOptions parallel = imageParallelOptions(options, settings.width, settings.height);
-    std::vector<ThreadTotals> totals(parallel.threads);
+    RenderWorkspace local;
+    std::vector<ThreadTotals>& totals =
+        (options.workspace != nullptr ? *options.workspace : local).threads().totals;
+    if (totals.size() < size_t(parallel.threads)) totals.resize(size_t(parallel.threads));
+    for (ThreadTotals& thread : totals) {
+        thread.stats = RenderStats();
+        thread.laneTilesBound = false;
+    }
 
     auto start = std::chrono::steady_clock::now();
     result.completed = parallelForTiles(

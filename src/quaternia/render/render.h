@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 
 #include "quaternia/image/image.h"
 #include "quaternia/image/png_writer.h"
@@ -14,9 +15,28 @@
 
 namespace quaternia {
 
+// What render() keeps from one call to the next when the caller hands it one: each thread's
+// scratch, the SIMD path's lane renderer with its batches among it, so that a film allocates
+// them once. It holds nothing of the picture: a render draws the same bytes with a workspace,
+// a used one or none. One render at a time may use a workspace.
+class RenderWorkspace {
+  public:
+    RenderWorkspace();
+    ~RenderWorkspace();
+    RenderWorkspace(const RenderWorkspace&) = delete;
+    RenderWorkspace& operator=(const RenderWorkspace&) = delete;
+
+    struct Threads;  // render.cpp's
+    Threads& threads() { return *threads_; }
+
+  private:
+    std::unique_ptr<Threads> threads_;
+};
+
 // How any image is computed (3D renders, plane images): threads, cancellation, progress.
 struct RenderOptions : WorkOptions {
-    bool depth = false;  // also fill RenderResult::depth
+    RenderWorkspace* workspace = nullptr;  // none: render() makes its scratch for the call
+    bool depth = false;                    // also fill RenderResult::depth
     // Where render.alpha is "opaque": fill RenderResult::samples instead of the image, each
     // row quantised as soon as its tile has it (while it is in cache), as encodePng would.
     bool opaqueSamples = false;

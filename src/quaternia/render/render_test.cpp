@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdio>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "quaternia/image/mask_compare.h"
 #include "quaternia/image/png_io.h"
@@ -129,6 +132,65 @@ TEST(Render, SameImageWithAnyThreadCount) {
         ASSERT_EQ(a.image.pixels()[k].r, b.image.pixels()[k].r);
         ASSERT_EQ(a.image.pixels()[k].a, b.image.pixels()[k].a);
     }
+}
+
+// Pixels equal to the last bit, colour and alpha.
+void expectSameImage(const Image& a, const Image& b) {
+    ASSERT_EQ(a.pixels().size(), b.pixels().size());
+    for (size_t k = 0; k < a.pixels().size(); ++k) {
+        const Rgba &p = a.pixels()[k], &q = b.pixels()[k];
+        ASSERT_TRUE(p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a) << "pixel " << k;
+    }
+}
+
+// A film renders its frames with one workspace: the lane renderers of the frame before, rebound,
+// draw what new ones draw.
+TEST(Render, AWorkspaceKeepsNothingOfThePicture) {
+    Scene before = defaultScene(), frame = defaultScene();
+    before.render.width = 72;
+    before.render.height = 40;
+    before.render.samples = 2;
+    frame.render.width = 48;
+    frame.render.height = 30;
+    frame.render.samples = 3;
+    frame.fractal.c = Quaternion(-0.3, 0.5, 0.1, 0.3);
+    frame.camera.position = Point3d(0.5, 0.4, 3.2);
+    RenderWorkspace workspace;
+    RenderOptions options;
+    options.threads = 2;
+    options.workspace = &workspace;
+    render(before, options);
+    RenderResult reused = render(frame, options);
+    options.workspace = nullptr;
+    RenderResult alone = render(frame, options);
+    EXPECT_STRNE(alone.stats.engine, "scalar") << "the SIMD path, whose renderers are kept";
+    EXPECT_EQ(std::string(reused.stats.engine), std::string(alone.stats.engine));
+    EXPECT_EQ(reused.stats.rays, alone.stats.rays);
+    expectSameImage(reused.image, alone.image);
+}
+
+// Sample positions are a function of the pixel and the sample's index alone (no state, no
+// frame, no thread), so the still parts of a film do not flicker from frame to frame.
+TEST(Render, SamplePositionsDependOnlyOnPixelAndIndex) {
+    std::vector<std::array<double, 2>> first;
+    for (int py = 0; py < 4; ++py)
+        for (int px = 0; px < 4; ++px)
+            for (int k = 0; k < 4; ++k)
+                first.push_back(samplePosition(k, 4, px, py));
+    render(unitBallScene(16, 12));
+    size_t at = first.size();
+    for (int py = 3; py >= 0; --py)
+        for (int px = 3; px >= 0; --px)
+            for (int k = 3; k >= 0; --k) {
+                std::array<double, 2> position = samplePosition(k, 4, px, py);
+                EXPECT_EQ(position, first[--at]);
+                // In the sample's stratum of the 2x2 grid.
+                EXPECT_GE(position[0], 0.5 * (k % 2));
+                EXPECT_LT(position[0], 0.5 * (k % 2 + 1));
+                EXPECT_GE(position[1], 0.5 * (k / 2));
+                EXPECT_LT(position[1], 0.5 * (k / 2 + 1));
+            }
+    EXPECT_NE(samplePosition(0, 4, 0, 0), samplePosition(0, 4, 1, 0)) << "jittered per pixel";
 }
 
 // The counters of work add up; the description of the whole render stays.

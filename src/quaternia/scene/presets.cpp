@@ -34,6 +34,22 @@ const std::vector<Preset>& scenePresets() {
          "quaternion map",
          {{"fractal.formula", std::string("(1+2i) z (0.5-k) z + c")},
           {"fractal.c", std::vector{-0.2, 0.6, 0.2, 0.2}}}},
+        // Films (`quaternia animate`): the default scene set moving by a shortcut, 30 fps,
+        // opaque (over the background gradient), as a video shows it.
+        {"hidden-turn",
+         "a film: the slice turns a full turn in the jk plane over 4 s, bringing the hidden k "
+         "axis into view and back",
+         {{"animation.turn_plane", std::string("jk")},
+          {"animation.turns", 1.0},
+          {"animation.duration", 4.0},
+          {"animation.fps", 30.0},
+          {"render.alpha", std::string("opaque")}}},
+        {"orbit",
+         "a film: the camera circles the set once over 6 s",
+         {{"animation.orbit_turns", 1.0},
+          {"animation.duration", 6.0},
+          {"animation.fps", 30.0},
+          {"render.alpha", std::string("opaque")}}},
     };
     return presets;
 }

@@ -37,7 +37,7 @@ TEST(Presets, EachIsNamedOnceDescribedAndValidThroughTheTable) {
     for (const Preset& preset : scenePresets())
         order.push_back(preset.name);
     EXPECT_EQ(order, (std::vector<std::string>{"rabbit", "dendrite", "basilica", "4d-blob", "cubic",
-                                               "two-sided"}));
+                                               "two-sided", "hidden-turn", "orbit"}));
 }
 
 TEST(Presets, RabbitIsTheSceneWithItsKeysSetByHand) {
@@ -74,7 +74,7 @@ TEST(Presets, HelpListsEveryNameWithItsDescription) {
     std::string help = presetHelp();
     for (const Preset& preset : scenePresets())
         EXPECT_NE(help.find("  " + preset.name + " "), std::string::npos) << preset.name;
-    EXPECT_NE(help.find("  rabbit     Douady's rabbit"), std::string::npos) << help;
+    EXPECT_NE(help.find("  rabbit       Douady's rabbit"), std::string::npos) << help;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "quaternia/util/parallel.h"
 
 #include <algorithm>
+#include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <stdexcept>
@@ -14,6 +15,73 @@ namespace {
 
 constexpr int kDefaultTileSize = 32;
 constexpr int kMaxThreads = 1024;
+
+// Threads that stay between calls, so that a film or a live explorer does not start a thread
+// per worker per frame: pool thread k runs worker k of a call (the calling thread is worker 0).
+// One call at a time holds the pool; tryRun refuses while another holds it, and the caller then
+// starts threads of its own. The pool is never destroyed: its idle threads wait until the
+// process ends, and nothing at exit has to wait for them.
+class WorkerPool {
+  public:
+    static WorkerPool& instance() {
+        static WorkerPool* pool = new WorkerPool;
+        return *pool;
+    }
+
+    // Runs work(0) here and work(1 .. workers - 1) on pool threads (fewer where no more threads
+    // can be started; `work` takes the items off one counter, so fewer workers still do all of
+    // them), and returns true once every one has returned; false, running nothing, when the
+    // pool is busy. `work` must not throw.
+    bool tryRun(int workers, const std::function<void(int)>& work) {
+        std::unique_lock hold(busy_, std::try_to_lock);
+        if (!hold.owns_lock()) return false;
+        std::unique_lock lock(mutex_);
+        while (int(threads_.size()) < workers - 1) {
+            try {
+                threads_.emplace_back([this, index = int(threads_.size()) + 1, seen = generation_] {
+                    serve(index, seen);
+                });
+            } catch (const std::system_error&) {
+                break;
+            }
+        }
+        job_ = &work;
+        jobWorkers_ = std::min(workers, int(threads_.size()) + 1);
+        running_ = jobWorkers_ - 1;
+        ++generation_;
+        lock.unlock();
+        wake_.notify_all();
+        work(0);
+        lock.lock();
+        done_.wait(lock, [&] { return running_ == 0; });
+        job_ = nullptr;
+        return true;
+    }
+
+  private:
+    void serve(int index, uint64_t seen) {
+        std::unique_lock lock(mutex_);
+        for (;;) {
+            wake_.wait(lock, [&] { return generation_ != seen; });
+            seen = generation_;
+            if (index >= jobWorkers_) continue;
+            const std::function<void(int)>& work = *job_;
+            lock.unlock();
+            work(index);
+            lock.lock();
+            if (--running_ == 0) done_.notify_one();
+        }
+    }
+
+    std::mutex busy_;   // held by the call whose job runs
+    std::mutex mutex_;  // guards the rest
+    std::condition_variable wake_, done_;
+    std::vector<std::thread> threads_;
+    const std::function<void(int)>* job_ = nullptr;
+    int jobWorkers_ = 0;
+    int running_ = 0;  // pool threads still in the job
+    uint64_t generation_ = 0;
+};
 
 // The worker machinery both parallel-fors share: items 0 .. itemCount - 1 go out in order
 // through one atomic counter; runItem(item, threadIndex) runs one and returns its weight in
@@ -49,18 +117,22 @@ bool runItems(int64_t itemCount, int64_t progressTotal, const ParallelOptions& o
         }
     };
 
-    std::vector<std::thread> threads;
-    threads.reserve(size_t(workers - 1));
-    for (int threadIndex = 1; threadIndex < workers; ++threadIndex) {
-        try {
-            threads.emplace_back(work, threadIndex);
-        } catch (const std::system_error&) {
-            break;  // no more threads to be had: the ones running share the work
+    if (!WorkerPool::instance().tryRun(workers, work)) {
+        // The pool is busy (another thread's call, or a call from inside a body): this call
+        // starts threads of its own.
+        std::vector<std::thread> threads;
+        threads.reserve(size_t(workers - 1));
+        for (int threadIndex = 1; threadIndex < workers; ++threadIndex) {
+            try {
+                threads.emplace_back(work, threadIndex);
+            } catch (const std::system_error&) {
+                break;  // no more threads to be had: the ones running share the work
+            }
         }
+        work(0);
+        for (std::thread& thread : threads)
+            thread.join();
     }
-    work(0);
-    for (std::thread& thread : threads)
-        thread.join();
 
     if (firstError) std::rethrow_exception(firstError);
     // Every item handed out ran, so all ran exactly when the counter went past the last one.

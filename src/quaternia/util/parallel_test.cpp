@@ -310,6 +310,61 @@ TEST(Parallel, WorkersRunConcurrentlyOnTheCallingThreadAndOthers) {
     EXPECT_NE(ids[1], caller);
 }
 
+// Runs 3 items on 3 workers that wait for each other (so each worker takes one), and returns
+// the thread of each worker.
+std::vector<std::thread::id> threadsOfThreeWorkers() {
+    ParallelOptions options;
+    options.threads = 3;
+    options.chunkSize = 1;
+    std::atomic<int> arrived{0};
+    std::vector<std::thread::id> ids(3);
+    parallelFor(3, options, [&](int64_t, int64_t, int index) {
+        ids[size_t(index)] = std::this_thread::get_id();
+        ++arrived;
+        while (arrived.load() < 3)
+            std::this_thread::yield();
+    });
+    return ids;
+}
+
+TEST(Parallel, WorkersStayBetweenCalls) {
+    // The same threads serve the next call: a film starts its workers once, not per frame.
+    std::vector<std::thread::id> first = threadsOfThreeWorkers();
+    std::vector<std::thread::id> second = threadsOfThreeWorkers();
+    EXPECT_EQ(first, second);
+    EXPECT_NE(first[1], first[2]);
+}
+
+TEST(Parallel, CallsFromSeveralThreadsAndFromInsideABodyEachRunWhole) {
+    // One call holds the pool; the others (another thread's, a body's own) start threads of
+    // their own and keep every rule: every item once, threadIndex in range.
+    ParallelOptions options;
+    options.threads = 3;
+    options.chunkSize = 1;
+    auto sumTo = [&](int64_t count) {
+        std::atomic<int64_t> sum{0};
+        parallelFor(count, options, [&](int64_t begin, int64_t end, int index) {
+            EXPECT_TRUE(index >= 0 && index < 3);
+            for (int64_t i = begin; i < end; ++i)
+                sum += i;
+        });
+        return sum.load();
+    };
+    std::vector<std::thread> callers;
+    std::atomic<int> correct{0};
+    for (int t = 0; t < 4; ++t)
+        callers.emplace_back([&] {
+            for (int repeat = 0; repeat < 20; ++repeat) {
+                std::atomic<int64_t> nested{0};
+                parallelFor(4, options, [&](int64_t, int64_t, int) { nested += sumTo(100); });
+                if (nested == 4 * 4950 && sumTo(1000) == 499500) ++correct;
+            }
+        });
+    for (std::thread& caller : callers)
+        caller.join();
+    EXPECT_EQ(correct.load(), 80);
+}
+
 TEST(Parallel, EmptyWorkCompletesWithoutCallingAnything) {
     ParallelOptions options;
     options.progress = [](int64_t, int64_t) { ADD_FAILURE() << "progress called"; };
