@@ -32,7 +32,8 @@ void expectBadKey(const httplib::Result& result, const std::string& key) {
 
 TEST_F(ExploreApi, ServesThePageAndTheParameterTable) {
     startServer(options());
-    for (const char* path : {"/", "/index.html", "/explore.js", "/controls.js", "/explore.css"}) {
+    for (const char* path :
+         {"/", "/index.html", "/explore.js", "/controls.js", "/timeline.js", "/explore.css"}) {
         auto r = get(path);
         ASSERT_TRUE(r);
         EXPECT_EQ(r->status, 200) << path;
