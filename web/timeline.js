@@ -1,9 +1,9 @@
 // The timeline: the keys of a film on a strip (a time cursor; markers to select, drag in time
 // and delete), each key's interpolation, fps and duration, and play / stop. A key stores the
-// whole view (every numeric parameter of fractal, slice, camera and shading) at its time; the
-// film moves the parameters whose values differ between keys and takes everything else from the
-// current view. Frames come from the server (GET /api/frame, the library's sceneAtFrame) and are
-// never interpolated here, so that the page plays what `quaternia animate` renders.
+// whole view (every numeric parameter of fractal, slice, camera and shading) at its time, and
+// the film shows it exactly there; what no key changes comes from the current view. Frames
+// come from the server (GET /api/frame, the library's sceneAtFrame) and are never interpolated
+// here, so that the page plays what `quaternia animate` renders.
 import { sameValue, tomlValue } from './controls.js';
 
 const ANIMATED_SECTIONS = new Set(['fractal', 'slice', 'camera', 'shading']);
@@ -16,10 +16,12 @@ export function animatedNames(table) {
     .map((p) => p.name);
 }
 
-// The keys as animation.keys' inline TOML array: each names the parameters whose values differ
-// between keys, so that at a key's time the film shows that key's values exactly.
-export function keysToml(keys, names) {
-  const moving = names.filter((name) => keys.some((k) => !sameValue(k.view[name], keys[0].view[name])));
+// The keys as animation.keys' inline TOML array. Each names every parameter that some key holds
+// at another value than `current` (the view the rest of the scene comes from), so that at a
+// key's time the film shows that key's values exactly; the others are current's all along.
+export function keysToml(keys, names, current) {
+  const moving = names.filter((name) =>
+    keys.some((key) => !sameValue(key.view[name], current[name])));
   if (!moving.length) return '[]';
   return '[' + keys.map((key) => {
     const parts = [`time = ${key.time}`];
@@ -55,7 +57,10 @@ export function createTimeline(page) {
   const snap = (t) => Math.max(0, Math.round(t * fps()) / fps());
   const span = () => state['animation.duration'] > 0 ? state['animation.duration']
     : Math.max(4, Math.ceil((keys.at(-1)?.time ?? 0) + 1), Math.ceil(cursor));
-  const say = (text, error = false) => { info.textContent = text; info.classList.toggle('error', error); };
+  const say = (text, error = false) => {
+    info.textContent = text;
+    info.classList.toggle('error', error);
+  };
 
   function draw() {
     for (const marker of track.querySelectorAll('.key')) marker.remove();
@@ -81,14 +86,14 @@ export function createTimeline(page) {
     draw();
   }
 
-  // Selecting a key shows it: its moving values over the current view.
+  // Selecting a key shows its view.
   function select(key) {
     selected = key;
     if (key) {
       cursor = key.time;
-      const moving = names.filter((n) => keys.some((k) => !sameValue(k.view[n], key.view[n])));
-      for (const name of moving) state[name] = structuredClone(key.view[name]);
-      if (moving.length) page.changed(moving[0]);
+      const changed = names.filter((n) => !sameValue(key.view[n], state[n]));
+      for (const name of changed) state[name] = structuredClone(key.view[name]);
+      if (changed.length) page.changed(null);
     }
     draw();
   }
@@ -156,7 +161,9 @@ export function createTimeline(page) {
     if (e.key === 'Delete' || e.key === 'Backspace') deleteKey();
   });
 
-  timeBox.addEventListener('change', () => Number.isFinite(+timeBox.value) && setCursor(+timeBox.value));
+  timeBox.addEventListener('change', () => {
+    if (Number.isFinite(+timeBox.value)) setCursor(+timeBox.value);
+  });
   $('add-key').addEventListener('click', addKey);
   $('delete-key').addEventListener('click', deleteKey);
   interpolationMenu.addEventListener('change', () => {
@@ -175,7 +182,7 @@ export function createTimeline(page) {
   // The query of the view with its film.
   function query(extra = {}) {
     return page.viewQuery(extra) + '&' +
-      new URLSearchParams({ 'animation.keys': keysToml(keys, names) });
+      new URLSearchParams({ 'animation.keys': keysToml(keys, names, state) });
   }
 
   async function filmError(response) {
@@ -223,7 +230,8 @@ export function createTimeline(page) {
         if (!playing()) return;
         cursor = (n - 1) / film.fps;
         draw();
-        page.timing.playFrames.push({ frame: n, bytes: buffer.byteLength, hash: hashBytes(buffer) });
+        page.timing.playFrames.push({ frame: n, bytes: buffer.byteLength,
+                                      hash: hashBytes(buffer) });
         await page.showFrame(new Blob([buffer], { type: 'image/png' }),
           `frame ${n} of ${film.frames}, ${+cursor.toFixed(3)} s`);
       }

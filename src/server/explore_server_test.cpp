@@ -187,6 +187,12 @@ TEST(ExploreRequest, CommandListsOnlyChangedKeysInExactTomlSyntax) {
     EXPECT_EQ(renderCommandForScene(scene),
               "quaternia render --set 'fractal.c=[0.1, 0.30000000000000004, 0.0, 0.0]' -o "
               "quaternia.png");
+    // [animation] does not change a still: the command leaves it out.
+    applyOverride(scene, "animation.fps=24");
+    applyOverride(scene, "animation.keys=[{time = 0, \"camera.fov\" = 30}]");
+    EXPECT_EQ(renderCommandForScene(scene),
+              "quaternia render --set 'fractal.c=[0.1, 0.30000000000000004, 0.0, 0.0]' -o "
+              "quaternia.png");
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ import tempfile
 
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
 
 from harness import Browser, Server, shown_image, wait_for_final, wait_until
 
@@ -86,6 +87,23 @@ def timeline(driver, binary, work):
     subprocess.run([binary, "render", path, "-o", os.path.join(work, "film.png")], check=True,
                    stdout=subprocess.DEVNULL)
     step("copied the film as a scene file with both keys; quaternia render reads it")
+
+    # Drag the second key onto the first (refused: times stay strictly increasing), then to
+    # the strip's middle (2 s of 4), then delete it with the Delete key.
+    markers = driver.find_elements(By.CSS_SELECTOR, "#track .key")
+    scroll_into_view(driver, markers[0])
+    ActionChains(driver).click_and_hold(markers[1]).move_to_element(markers[0]).release().perform()
+    wait_until(driver, "return document.getElementById('film-info').textContent"
+                       ".startsWith('a key is already at 0');")
+    check(driver.execute_script("return document.body.dataset.keys;") == "[0,0.5]",
+          "a drop on another key is refused")
+    track = driver.find_element(By.ID, "track")
+    marker = driver.find_elements(By.CSS_SELECTOR, "#track .key")[1]
+    ActionChains(driver).click_and_hold(marker).move_to_element(track).release().perform()
+    wait_until(driver, "return document.body.dataset.keys === '[0,2]';")
+    track.send_keys(Keys.DELETE)
+    wait_until(driver, "return document.body.dataset.keys === '[0]';")
+    step("dragging refused a drop on a key, moved a key to 2 s; Delete removed it")
 
 
 def main():
