@@ -205,6 +205,7 @@ function mapPoint(x, y) {  // canvas pixels -> c = re + im i, as plane_view.h ma
 }
 
 async function loadMap() {
+  if (!table.length) return;  // the formula is not known yet: main() loads the map
   mapFormula = state['fractal.formula'];
   const query = new URLSearchParams({ client: clientId });
   const settings = { 'fractal.formula': mapFormula, 'render.width': map.width,
@@ -344,8 +345,10 @@ async function main() {
   }
   refreshControls = buildControls(controls, table, state, changed);
   buildPresets(await presets);
-  await timeline.load(table);
   drawMap();  // c, before the map's image arrives
+  // A first frame that came before the table could not load the map.
+  if (timing.firstFrameMs !== null && mapFormula === null) loadMap();
   if (!inflight && view.dataset.level !== undefined) requestLevel(+view.dataset.level + 1);
+  timeline.load(table);  // the starting scene's keys, if it has any
 }
 main();
