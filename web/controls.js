@@ -4,9 +4,9 @@
 // drag through (camera position: +-10000), the slider gets a narrower one and the number box
 // still takes anything the table allows.
 
-// Sections and keys the page sets itself (image size, output format) or that belong to other
-// commands (plane images, meshes, orbits and cycles).
-const HIDDEN_SECTIONS = new Set(['plane', 'mesh', 'orbit', 'cycles']);
+// Sections and keys the page sets itself (image size, output format; [animation] belongs to the
+// timeline) or that belong to other commands (plane images, meshes, orbits and cycles).
+const HIDDEN_SECTIONS = new Set(['plane', 'mesh', 'orbit', 'cycles', 'animation']);
 const HIDDEN_KEYS = new Set(['render.width', 'render.height', 'render.bit_depth', 'camera.up']);
 
 const SLIDER_RANGES = {

@@ -1,8 +1,10 @@
 // The explorer page: a progressive view of the scene (a quarter-resolution frame at once, then
 // finer ones while the view is still), orbit and zoom with the mouse, the Mandelbrot map that
 // picks c, presets, and the exports. Every request names this tab's client id, so the server
-// cancels the tab's stale render as soon as a newer view is asked for.
+// cancels the tab's stale render as soon as a newer view is asked for. The timeline
+// (timeline.js) keys, plays and copies films of the view.
 import { buildControls, markInvalid, sameValue, tomlValue } from './controls.js';
+import { createTimeline } from './timeline.js';
 
 const clientId = 'tab-' + Math.random().toString(36).slice(2, 12);
 const view = document.getElementById('view');
@@ -74,6 +76,7 @@ window.exploreTiming = timing;
 // a refinement in flight is stale at once and is aborted (the server cancels it when the next
 // request of this tab arrives).
 function viewChanged() {
+  timeline.stop();  // the live view takes the image back
   ++generation;
   lastChange = performance.now();
   document.body.dataset.state = 'rendering';
@@ -202,6 +205,7 @@ function mapPoint(x, y) {  // canvas pixels -> c = re + im i, as plane_view.h ma
 }
 
 async function loadMap() {
+  if (!table.length) return;  // the formula is not known yet: main() loads the map
   mapFormula = state['fractal.formula'];
   const query = new URLSearchParams({ client: clientId });
   const settings = { 'fractal.formula': mapFormula, 'render.width': map.width,
@@ -268,7 +272,9 @@ function exactQuery() {
 }
 
 async function copyText(route, attribute) {
-  const response = await fetch(`/api/${route}?` + exactQuery());
+  // The scene file carries the film; a still's command does not need it.
+  const query = route === 'scene' ? timeline.query(levels().at(-1)) : exactQuery();
+  const response = await fetch(`/api/${route}?` + query);
   const text = response.ok ? (await response.text()).trim() : await errorText(response);
   copied.value = text;
   document.body.dataset[attribute] = text;
@@ -289,6 +295,33 @@ document.getElementById('download').addEventListener('click', () => downloadFrom
               'render.samples': state['render.samples'] })));
 document.getElementById('export-mesh').addEventListener('click', () => downloadFrom('/api/mesh?' +
   viewQuery({ 'mesh.resolution': Math.min(256, state['mesh.resolution']) })));
+
+// ---- Timeline ---------------------------------------------------------------------------------
+
+const timeline = createTimeline({
+  state, start, viewQuery, timing, changed, errorText, resumeLive: () => viewChanged(),
+  // Frames at a quarter of the final size, as the first level of the live view.
+  previewSize: () => {
+    const { 'render.width': width, 'render.height': height } = levels()[0];
+    return { 'render.width': width, 'render.height': height };
+  },
+  // Playing owns the image: the live view's request is dropped and refines no further.
+  pauseLive: () => {
+    ++generation;
+    if (inflight) inflight.controller.abort();
+    inflight = null;
+    document.body.dataset.state = 'film';
+  },
+  showFrame: async (blob, text) => {
+    const url = URL.createObjectURL(blob);
+    const previous = view.src;
+    view.src = url;
+    await view.decode().catch(() => {});
+    if (previous.startsWith('blob:')) URL.revokeObjectURL(previous);
+    statusLine.className = '';
+    statusLine.textContent = text;
+  },
+});
 
 // ---- Start ------------------------------------------------------------------------------------
 
@@ -313,6 +346,9 @@ async function main() {
   refreshControls = buildControls(controls, table, state, changed);
   buildPresets(await presets);
   drawMap();  // c, before the map's image arrives
+  // A first frame that came before the table could not load the map.
+  if (timing.firstFrameMs !== null && mapFormula === null) loadMap();
   if (!inflight && view.dataset.level !== undefined) requestLevel(+view.dataset.level + 1);
+  timeline.load(table);  // the starting scene's keys, if it has any
 }
 main();

@@ -70,13 +70,22 @@ Scene sceneFromQuery(const Scene& base, const QueryParameters& query, const Expl
             throw UserError(name, "unknown key '" + name + "'");
         applyOverride(scene, name + "=" + value);
     }
+    if (scene.animation.keys.size() > limits.maxAnimationKeys) {
+        throw UserError("animation.keys",
+                        "too many animation keys (" + std::to_string(scene.animation.keys.size()) +
+                            "; at most " + std::to_string(limits.maxAnimationKeys) + ")");
+    }
+    checkSceneCost(scene, limits);
+    return scene;
+}
+
+void checkSceneCost(const Scene& scene, const ExploreLimits& limits) {
     validateScene(scene);
     // The explorer's own bounds on cost, then the formula (a parse error names fractal.formula).
     checkAtMost("fractal.max_iterations", scene.fractal.maxIterations, limits.maxIterations,
                 "iterations");
     checkAtMost("render.max_steps", scene.render.maxSteps, limits.maxSteps, "steps");
     Fractal::fromScene(scene);
-    return scene;
 }
 
 void checkInteractiveImage(const Scene& scene, const ExploreLimits& limits) {
@@ -118,7 +127,7 @@ std::string renderCommandForScene(const Scene& scene) {
     std::string command = "quaternia render";
     for (const Parameter& p : parameterTable()) {
         ParameterValue value = p.read(scene);
-        if (value == p.read(defaults)) continue;
+        if (value == p.read(defaults) || p.section == "animation") continue;
         command += " --set " + shellQuote(p.name() + "=" + formatValue(value));
     }
     command += " -o quaternia.png";

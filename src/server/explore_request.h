@@ -24,6 +24,9 @@ struct ExploreLimits {
     int64_t meshResolution = 256;  // mesh.resolution of /api/mesh
     int64_t planePixels = 1024 * 1024;
     std::size_t maxParameters = 64;  // query parameters per request
+    // Keys of animation.keys. Their text is bounded besides by the request line, which
+    // cpp-httplib limits to 8 KiB (CPPHTTPLIB_REQUEST_URI_MAX_LENGTH, 414 beyond).
+    std::size_t maxAnimationKeys = 64;
 };
 
 // The query parameters of a request in order: (name, value), names and values URL-decoded.
@@ -35,8 +38,13 @@ inline constexpr const char* kClientParameter = "client";
 // `base` (the default scene, or the scene file the server started with) with every query
 // parameter applied as `--set name=value` (TOML value syntax; a bare word is a string), then
 // validated. Throws UserError naming the key for an
-// unknown key, a bad value or a cross-field problem; "client" is skipped.
+// unknown key, a bad value or a cross-field problem; "client" is skipped. animation.keys (the
+// inline TOML array of --set) is read, at most limits.maxAnimationKeys of them.
 Scene sceneFromQuery(const Scene& base, const QueryParameters& query, const ExploreLimits& limits);
+
+// validateScene, then the explorer's bounds on iterations and steps, then the formula; each
+// throws UserError naming the key. sceneFromQuery's checks, for scenes made otherwise (a frame).
+void checkSceneCost(const Scene& scene, const ExploreLimits& limits);
 
 // What each route allows on top of sceneFromQuery; each throws UserError naming the key.
 void checkInteractiveImage(const Scene& scene, const ExploreLimits& limits);
@@ -49,6 +57,7 @@ std::string clientIdFromQuery(const QueryParameters& query);
 
 // `quaternia render --set 'key=value' ... -o quaternia.png`: every key whose value differs from
 // the default, each value in exact TOML syntax, so that the command renders the same picture.
+// [animation] is left out: it does not change a still.
 std::string renderCommandForScene(const Scene& scene);
 
 // The parameter table as JSON: [{"name", "section", "key", "type", "default", "value",

@@ -11,9 +11,11 @@
 #include "quaternia/mesh/mesher.h"
 #include "quaternia/plane/plane_render.h"
 #include "quaternia/render/render.h"
+#include "quaternia/scene/animation.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_file.h"
 #include "quaternia/util/error.h"
+#include "server/explore_film.h"
 #include "server/explore_sessions.h"
 #include "server/explore_static.h"
 
@@ -89,6 +91,24 @@ bool runInSlot(ExploreServer::State& state, const std::string& client, Response&
     return true;
 }
 
+// Renders `scene` in `slot` and answers its PNG, or 204 when a newer request cancelled it.
+// Returns whether it answered the image.
+bool answerRender(ExploreServer::State& state, const std::string& slot, const Scene& scene,
+                  Response& response) {
+    RenderResult result;
+    bool done = runInSlot(state, slot, response, [&](const WorkOptions& w) {
+        result = render(scene, RenderOptions{w});
+        return result.completed;
+    });
+    if (!done) return false;
+    answerBytes(
+        response,
+        encodePng(result.image, scene.render.bitDepth, scene.render.alpha == AlphaMode::Opaque),
+        "image/png");
+    response.set_header("X-Render-Ms", std::to_string(result.stats.seconds * 1000));
+    return true;
+}
+
 void renderRoute(ExploreServer::State& state, const Request& request, Response& response,
                  bool download) {
     guarded(response, [&] {
@@ -99,19 +119,21 @@ void renderRoute(ExploreServer::State& state, const Request& request, Response& 
             checkDownloadImage(scene, state.options.limits);
         else
             checkInteractiveImage(scene, state.options.limits);
-        RenderResult result;
-        bool done = runInSlot(state, download ? "" : client, response, [&](const WorkOptions& w) {
-            result = render(scene, RenderOptions{w});
-            return result.completed;
-        });
-        if (!done) return;
-        answerBytes(
-            response,
-            encodePng(result.image, scene.render.bitDepth, scene.render.alpha == AlphaMode::Opaque),
-            "image/png");
-        response.set_header("X-Render-Ms", std::to_string(result.stats.seconds * 1000));
-        if (download)
+        if (answerRender(state, download ? "" : client, scene, response) && download)
             response.set_header("Content-Disposition", "attachment; filename=\"quaternia.png\"");
+    });
+}
+
+// One frame of the film, in a slot of its own per tab so that playing and the live view do not
+// cancel each other; a newer frame of the same tab cancels a stale one.
+void frameRoute(ExploreServer::State& state, const Request& request, Response& response) {
+    guarded(response, [&] {
+        QueryParameters query = queryOf(request);
+        int64_t frame = takeFrameNumber(query);
+        std::string client = clientIdFromQuery(query);
+        Scene film = sceneFromQuery(state.options.startScene, query, state.options.limits);
+        Scene scene = filmFrame(film, frame, state.options.limits);
+        answerRender(state, client.empty() ? "" : client + "-film", scene, response);
     });
 }
 
@@ -181,6 +203,16 @@ void addRoutes(ExploreServer::State& state) {
     http.Get("/api/render", [&state](const Request& request, Response& response) {
         renderRoute(state, request, response, false);
     });
+    http.Get("/api/frame", [&state](const Request& request, Response& response) {
+        frameRoute(state, request, response);
+    });
+    http.Get("/api/film", [&state](const Request& request, Response& response) {
+        guarded(response, [&] {
+            Scene film =
+                sceneFromQuery(state.options.startScene, queryOf(request), state.options.limits);
+            response.set_content(filmJson(film), "application/json");
+        });
+    });
     http.Get("/api/download", [&state](const Request& request, Response& response) {
         renderRoute(state, request, response, true);
     });
@@ -194,6 +226,7 @@ void addRoutes(ExploreServer::State& state) {
         guarded(response, [&] {
             Scene scene =
                 sceneFromQuery(state.options.startScene, queryOf(request), state.options.limits);
+            if (isAnimated(scene)) validateAnimation(scene);  // what quaternia animate refuses
             response.set_content(sceneToToml(scene), "application/toml");
         });
     });

@@ -32,7 +32,8 @@ void expectBadKey(const httplib::Result& result, const std::string& key) {
 
 TEST_F(ExploreApi, ServesThePageAndTheParameterTable) {
     startServer(options());
-    for (const char* path : {"/", "/index.html", "/explore.js", "/controls.js", "/explore.css"}) {
+    for (const char* path :
+         {"/", "/index.html", "/explore.js", "/controls.js", "/timeline.js", "/explore.css"}) {
         auto r = get(path);
         ASSERT_TRUE(r);
         EXPECT_EQ(r->status, 200) << path;
@@ -183,6 +184,12 @@ TEST(ExploreRequest, CommandListsOnlyChangedKeysInExactTomlSyntax) {
     Scene scene = defaultScene();
     EXPECT_EQ(renderCommandForScene(scene), "quaternia render -o quaternia.png");
     applyOverride(scene, "fractal.c=[0.1, 0.30000000000000004, 0, 0]");
+    EXPECT_EQ(renderCommandForScene(scene),
+              "quaternia render --set 'fractal.c=[0.1, 0.30000000000000004, 0.0, 0.0]' -o "
+              "quaternia.png");
+    // [animation] does not change a still: the command leaves it out.
+    applyOverride(scene, "animation.fps=24");
+    applyOverride(scene, "animation.keys=[{time = 0, \"camera.fov\" = 30}]");
     EXPECT_EQ(renderCommandForScene(scene),
               "quaternia render --set 'fractal.c=[0.1, 0.30000000000000004, 0.0, 0.0]' -o "
               "quaternia.png");

@@ -1,6 +1,8 @@
 """The explorer in a real browser (Debian's headless chromium): load the page, drag a slider and
 see the image change, click the Mandelbrot map and see c change, copy the CLI command and render
-it with `quaternia render` to the same picture, byte for byte.
+it with `quaternia render` to the same picture, byte for byte; key two values of c on the
+timeline, play the film and see its frames change, and copy it as a scene file that the library
+reads back with both keys.
 Usage: python3 explore_test.py --binary build/quaternia [--screenshot docs/explorer.png]"""
 import argparse
 import json
@@ -13,6 +15,7 @@ import tempfile
 
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
 
 from harness import Browser, Server, shown_image, wait_for_final, wait_until
 
@@ -29,6 +32,78 @@ def check(condition, message):
 def scroll_into_view(driver, element):
     driver.execute_script("arguments[0].scrollIntoView({block: 'center'});", element)
     return element.rect  # x, y, width, height in CSS pixels, after scrolling
+
+
+def click(driver, element_id):
+    element = driver.find_element(By.ID, element_id)
+    scroll_into_view(driver, element)
+    element.click()
+
+
+def set_number(driver, element_id, value):
+    driver.execute_script("""const box = document.getElementById(arguments[0]);
+        box.value = arguments[1];
+        box.dispatchEvent(new Event('change'));""", element_id, value)
+
+
+def timeline(driver, binary, work):
+    """Keys c = -1 at 0 s (the basilica, shown) and the rabbit's c at 0.5 s, plays the film at
+    8 fps and copies it as a scene file."""
+    click(driver, "add-key")
+    wait_until(driver, "return document.body.dataset.keys === '[0]';")
+    set_number(driver, "timeline-time", 0.5)
+    rabbit = driver.find_element(By.CSS_SELECTOR, "#presets button[data-preset=rabbit]")
+    scroll_into_view(driver, rabbit)
+    rabbit.click()
+    wait_until(driver, "return JSON.parse(document.body.dataset.c)[0] !== -1;")
+    click(driver, "add-key")
+    wait_until(driver, "return document.body.dataset.keys === '[0,0.5]';")
+    set_number(driver, "timeline-fps", 8)
+    step("keys at 0 s and 0.5 s")
+
+    click(driver, "play")
+    wait_until(driver, "return document.body.dataset.play === 'done';", 120)
+    frames = driver.execute_script("return window.exploreTiming.playFrames;")
+    check([f["frame"] for f in frames] == [1, 2, 3, 4, 5], "frames played: %s" % frames)
+    check(len({f["hash"] for f in frames}) == 5, "every frame differs: %s" % frames)
+    step("played %d frames, each a different image" % len(frames))
+
+    driver.execute_script("document.body.dataset.scene = '';")
+    click(driver, "copy-scene")
+    wait_until(driver, "return document.body.dataset.scene;")
+    scene = driver.execute_script("return document.body.dataset.scene;")
+    check(scene.count("[[animation.keys]]") == 2, scene)
+    check(re.search(r"^fps = 8(\.0)?$", scene, re.M), "fps in the scene file")
+    keys = scene.split("[[animation.keys]]")[1:]
+    check(re.search(r"^time = 0(\.0)?$", keys[0], re.M) and
+          re.search(r'^"fractal\.c" = \[-1\.0, 0\.0, 0\.0, 0\.0\]$', keys[0], re.M),
+          "the first key: %s" % keys[0])
+    check(re.search(r"^time = 0\.5$", keys[1], re.M) and
+          re.search(r'^"fractal\.c" = \[-0\.122561', keys[1], re.M),
+          "the second key: %s" % keys[1])
+    path = os.path.join(work, "film.toml")
+    with open(path, "w") as out:
+        out.write(scene + "\n")
+    subprocess.run([binary, "render", path, "-o", os.path.join(work, "film.png")], check=True,
+                   stdout=subprocess.DEVNULL)
+    step("copied the film as a scene file with both keys; quaternia render reads it")
+
+    # Drag the second key onto the first (refused: times stay strictly increasing), then to
+    # the strip's middle (2 s of 4), then delete it with the Delete key.
+    markers = driver.find_elements(By.CSS_SELECTOR, "#track .key")
+    scroll_into_view(driver, markers[0])
+    ActionChains(driver).click_and_hold(markers[1]).move_to_element(markers[0]).release().perform()
+    wait_until(driver, "return document.getElementById('film-info').textContent"
+                       ".startsWith('a key is already at 0');")
+    check(driver.execute_script("return document.body.dataset.keys;") == "[0,0.5]",
+          "a drop on another key is refused")
+    track = driver.find_element(By.ID, "track")
+    marker = driver.find_elements(By.CSS_SELECTOR, "#track .key")[1]
+    ActionChains(driver).click_and_hold(marker).move_to_element(track).release().perform()
+    wait_until(driver, "return document.body.dataset.keys === '[0,2]';")
+    track.send_keys(Keys.DELETE)
+    wait_until(driver, "return document.body.dataset.keys === '[0]';")
+    step("dragging refused a drop on a key, moved a key to 2 s; Delete removed it")
 
 
 def main():
@@ -115,6 +190,7 @@ def main():
             wait_for_final(driver)
             check(shown_image(driver) != shown, "the basilica preset changes the image")
             step("presets %s; basilica set c = -1" % names)
+            timeline(driver, arguments.binary, work)
         errors = browser.uncaught_errors()
         check(not errors, "the page threw: %s" % errors)
         print("browser test: passed", flush=True)
