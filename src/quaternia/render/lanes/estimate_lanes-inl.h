@@ -337,6 +337,67 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionT<hn::Ve
         g[j].finish(d, k, certified, n, iteration, live[j], result[j], counters);
 }
 
+// One group of lanes of estimateThreeNumbers (below): the orbit as a, b, rho, with aa = a^2 and
+// rest = b^2 + rho (|u|^2 = aa + rest); |u|^2 and |u'|^2 of the lanes still running, a lane's
+// staying where it stopped (merge-masked arithmetic: no separate copies taken when lanes stop, two
+// operations less per iterate); kOrbit also the trap and each lane's iteration count.
+template <class D>
+struct ThreeNumbersGroup {
+    using V = hn::Vec<D>;
+    using M = hn::Mask<D>;
+    V a, b, rho, aa, rest;
+    V r2, derivativeSquared;
+    V trap, stopIteration;  // kOrbit only
+    M done, inside, escaped;
+
+    // At u_0, whose derivative is 1.
+    HWY_INLINE void start(D d, const LaneConstants<D>& k, const QuaternionT<V>& u, M live, V one) {
+        a = u.w, b = u.x;
+        rho = hn::MulAdd(u.z, u.z, u.y * u.y);
+        aa = a * a;
+        rest = hn::MulAdd(b, b, rho);
+        r2 = aa + rest;
+        derivativeSquared = one;
+        startLanes(d, r2, live, k.scaledBailoutSquared, k.scaledEscapeRadiusSquared,
+                   k.scaledEstimateRadiusSquared, k.maxIterationCount, escaped, done, inside);
+        trap = r2;
+        stopIteration = hn::Zero(d);
+    }
+
+    // The next iterate of the running lanes: |u'|^2 <- |u|^2 |u'|^2, then a <- (a^2 - b^2 -
+    // rho) / 2 + 2 s c.w, b <- a b + 2 s c.x, rho <- a^2 rho.
+    HWY_INLINE void iterate(const LaneConstants<D>& k, M running, V half) {
+        derivativeSquared = hn::IfThenElse(running, derivativeSquared * r2, derivativeSquared);
+        const V nextA = hn::MulAdd(half, aa - rest, k.scaledC);
+        b = hn::MulAdd(a, b, k.scaledCi);
+        rho = aa * rho;
+        a = nextA;
+        aa = a * a;
+        rest = hn::MulAdd(b, b, rho);
+        r2 = hn::IfThenElse(running, aa + rest, r2);
+    }
+
+    // The group's estimates once the loop ended after n - 1 iterates.
+    template <bool kOrbit>
+    HWY_INLINE void finish(D d, const LaneConstants<D>& k, int n, LaneEstimate<D>& result,
+                           LaneCounters& counters) {
+        using T = hn::TFromD<D>;
+        const auto unfinished = hn::Not(done);  // the continuation cap ended them
+        const V radiusSquared = r2 * k.inverseFourScaleSquared;
+        const V derivative = derivativeSquared;
+        counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
+        result.inside = inside;
+        result.distance =
+            hn::IfThenZeroElse(inside, closingDistance(d, radiusSquared, derivative, k.stepScale));
+        result.radiusSquared = radiusSquared;
+        if constexpr (kOrbit) {
+            result.trapSquared = trap * k.inverseFourScaleSquared;
+            stopIteration = hn::IfThenElse(unfinished, hn::Set(d, T(n - 1)), stopIteration);
+            result.iterations = hn::IfThenElse(inside, k.maxIterations, stopIteration);
+        }
+    }
+};
+
 // estimateLanes' certified case for float lanes of s z^2 + c and distances alone: the hot loop
 // of the renderer (LaneConstants::threeNumbers). The points come as u = 2 s z
 // (LaneConstants::loopFromWorld), for which the map reads u <- u^2 / 2 + 2 s c and the running
@@ -357,26 +418,11 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
     using M = hn::Mask<D>;
     using T = hn::TFromD<D>;
     const V one = hn::Set(d, T(1)), half = hn::Set(d, T(0.5));
-    V a[K], b[K], rho[K], aa[K], rest[K];  // rest = b^2 + rho, |u|^2 = aa + rest
-    // |u|^2 and |u'|^2 of the lanes still running; a lane's stay where it stopped (merge-masked
-    // arithmetic: no separate copies taken when lanes stop, two operations less per iterate).
-    V r2[K], derivativeSquared[K];
-    V trap[K], stopIteration[K];  // kOrbit only
-    M done[K], inside[K], escaped[K];
+    ThreeNumbersGroup<D> g[K];
     bool allDone = true;
     for (size_t j = 0; j < K; ++j) {
-        a[j] = u[j].w, b[j] = u[j].x;
-        rho[j] = hn::MulAdd(u[j].z, u[j].z, u[j].y * u[j].y);
-        aa[j] = a[j] * a[j];
-        rest[j] = hn::MulAdd(b[j], b[j], rho[j]);
-        r2[j] = aa[j] + rest[j];
-        derivativeSquared[j] = one;
-        startLanes(d, r2[j], live[j], k.scaledBailoutSquared, k.scaledEscapeRadiusSquared,
-                   k.scaledEstimateRadiusSquared, k.maxIterationCount, escaped[j], done[j],
-                   inside[j]);
-        trap[j] = r2[j];
-        stopIteration[j] = hn::Zero(d);
-        allDone = allDone && hn::AllTrue(d, done[j]);
+        g[j].start(d, k, u[j], live[j], one);
+        allDone = allDone && hn::AllTrue(d, g[j].done);
     }
     const int iterationCap = k.maxIterationCount + kMaxContinuation;
     int64_t runningLanes = 0;
@@ -385,49 +431,27 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
         allDone = true;
         const bool last = n + 1 >= k.maxIterationCount;  // z_0 .. z_{N-1} tested
         for (size_t j = 0; j < K; ++j) {
-            const M doneBefore = done[j];
-            const M running = hn::Not(doneBefore);
-            derivativeSquared[j] =
-                hn::IfThenElse(running, derivativeSquared[j] * r2[j], derivativeSquared[j]);
-            const V nextA = hn::MulAdd(half, aa[j] - rest[j], k.scaledC);
-            b[j] = hn::MulAdd(a[j], b[j], k.scaledCi);
-            rho[j] = aa[j] * rho[j];
-            a[j] = nextA;
-            aa[j] = a[j] * a[j];
-            rest[j] = hn::MulAdd(b[j], b[j], rho[j]);
-            r2[j] = hn::IfThenElse(running, aa[j] + rest[j], r2[j]);
+            const M doneBefore = g[j].done;
+            g[j].iterate(k, hn::Not(doneBefore), half);
             if constexpr (kOrbit) {
                 // The trap takes the iterates up to the first past the bailout.
-                const auto settled = hn::Or(escaped[j], doneBefore);
-                trap[j] = hn::IfThenElse(settled, trap[j], hn::Min(trap[j], r2[j]));
-                escaped[j] = hn::Or(escaped[j], r2[j] > k.scaledBailoutSquared);
+                const auto settled = hn::Or(g[j].escaped, doneBefore);
+                g[j].trap = hn::IfThenElse(settled, g[j].trap, hn::Min(g[j].trap, g[j].r2));
+                g[j].escaped = hn::Or(g[j].escaped, g[j].r2 > k.scaledBailoutSquared);
             }
             const bool groupDone =
-                settleFrozen(d, r2[j], k.scaledEstimateRadiusSquared, k.scaledBailoutSquared, last,
-                             done[j], inside[j], runningLanes);
+                settleFrozen(d, g[j].r2, k.scaledEstimateRadiusSquared, k.scaledBailoutSquared,
+                             last, g[j].done, g[j].inside, runningLanes);
             if constexpr (kOrbit) {
-                stopIteration[j] = hn::IfThenElse(hn::AndNot(doneBefore, done[j]), hn::Set(d, T(n)),
-                                                  stopIteration[j]);
+                g[j].stopIteration = hn::IfThenElse(hn::AndNot(doneBefore, g[j].done),
+                                                    hn::Set(d, T(n)), g[j].stopIteration);
             }
             allDone = allDone && groupDone;
         }
     }
     counters.laneIterations += runningLanes;
-    for (size_t j = 0; j < K; ++j) {
-        const auto unfinished = hn::Not(done[j]);  // the continuation cap ended them
-        const V radiusSquared = r2[j] * k.inverseFourScaleSquared;
-        const V derivative = derivativeSquared[j];
-        counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
-        result[j].inside = inside[j];
-        result[j].distance = hn::IfThenZeroElse(
-            inside[j], closingDistance(d, radiusSquared, derivative, k.stepScale));
-        result[j].radiusSquared = radiusSquared;
-        if constexpr (kOrbit) {
-            result[j].trapSquared = trap[j] * k.inverseFourScaleSquared;
-            stopIteration[j] = hn::IfThenElse(unfinished, hn::Set(d, T(n - 1)), stopIteration[j]);
-            result[j].iterations = hn::IfThenElse(inside[j], k.maxIterations, stopIteration[j]);
-        }
-    }
+    for (size_t j = 0; j < K; ++j)
+        g[j].template finish<kOrbit>(d, k, n, result[j], counters);
 }
 
 // The estimates at the current points of the rays in the lanes (o + t d, through the slice):
