@@ -64,61 +64,10 @@ void LaneTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixel
         (width + kConeBlock - 1) / kConeBlock * ((tile.y1 - tile.y0 + kConeBlock - 1) / kConeBlock);
     pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{});
     marchCones(tile, stats);
-    const int blocksAcross = (width + kConeBlock - 1) / kConeBlock;
     for (int k = 0; k < samples_; ++k) {
-        rays_.clear();
-        rayPixel_.clear();
-        rayBlock_.clear();
-        for (int py = tile.y0; py < tile.y1; ++py) {
-            const double* blockRow =
-                blockStart_.data() + size_t((py - tile.y0) / kConeBlock * blocksAcross);
-            const int rowBlock = (py - tile.y0) / kConeBlock * blocksAcross;
-            // A row whose blocks' cones all missed has no ray to march.
-            if (std::all_of(blockRow, blockRow + blocksAcross, [](double start) {
-                    return start == std::numeric_limits<double>::infinity();
-                })) {
-                continue;
-            }
-            if (samples_ == 1) {
-                rowRays(tile, py, blockRow);
-            } else {
-                rowRays_.resize(size_t(width));
-                for (int px = tile.x0; px < tile.x1; ++px) {
-                    auto [sx, sy] = samplePosition(k, samples_, px, py);
-                    const Ray ray = camera_->generateRay(px + sx, py + sy);
-                    RowRay& r = rowRays_[size_t(px - tile.x0)];
-                    r.direction = ray.direction;
-                    auto interval = intersectSphere(ray, boundingRadius_);
-                    r.tNear = interval ? interval->tNear : 1;
-                    r.tFar = interval ? interval->tFar : -1;  // none: tNear > tFar
-                }
-            }
-            for (int px = tile.x0; px < tile.x1; ++px) {
-                const int column = (px - tile.x0) / kConeBlock;
-                const double start = blockRow[column];
-                if (start == std::numeric_limits<double>::infinity()) continue;  // cone missed
-                const RowRay& r = rowRays_[size_t(px - tile.x0)];
-                const double near = std::max(r.tNear, start);
-                // Not r.tNear <= r.tFar: the sphere missed, or the cone found nothing on it.
-                if (!(near <= r.tFar)) continue;
-                rays_.push(Ray{camera_->position(), r.direction}, near, r.tFar);
-                rayPixel_.push_back((py - tile.y0) * width + (px - tile.x0));
-                rayBlock_.push_back(rowBlock + column);
-            }
-        }
+        sampleRays(tile, k);
         traceCameraRays(lanes_, march_, rays_, traced_, stats.camera);
-
-        hits_.clear();
-        hitPoints_.clear();
-        for (size_t i = 0; i < traced_.size(); ++i) {
-            const TraceResult& r = traced_[i];
-            stats.marchSteps += r.steps;
-            if (r.end == TraceEnd::Miss) continue;
-            Ray ray{Point3d(rays_.ox[i], rays_.oy[i], rays_.oz[i]),
-                    Vector3d(rays_.dx[i], rays_.dy[i], rays_.dz[i])};
-            hits_.push_back({rayPixel_[i], rayBlock_[i], r.t, ray.direction, ray.at(r.tOutside)});
-            hitPoints_.push(hits_.back().outside);
-        }
+        collectHits(stats);
         if (hits_.empty()) continue;
         shadeHits(stats);
         for (size_t h = 0; h < hits_.size(); ++h) {
@@ -127,6 +76,74 @@ void LaneTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixel
             pixel.depthSum += hits_[h].t;
             ++pixel.hits;
         }
+    }
+}
+
+void LaneTileRenderer::sampleRays(const Tile& tile, int k) {
+    const int width = tile.x1 - tile.x0;
+    const int blocksAcross = (width + kConeBlock - 1) / kConeBlock;
+    rays_.clear();
+    rayPixel_.clear();
+    rayBlock_.clear();
+    for (int py = tile.y0; py < tile.y1; ++py) {
+        const double* blockRow =
+            blockStart_.data() + size_t((py - tile.y0) / kConeBlock * blocksAcross);
+        // A row whose blocks' cones all missed has no ray to march.
+        if (std::all_of(blockRow, blockRow + blocksAcross, [](double start) {
+                return start == std::numeric_limits<double>::infinity();
+            })) {
+            continue;
+        }
+        if (samples_ == 1) {
+            rowRays(tile, py, blockRow);
+        } else {
+            sampleRowRays(tile, py, k);
+        }
+        pushRowRays(tile, py, blockRow);
+    }
+}
+
+void LaneTileRenderer::sampleRowRays(const Tile& tile, int py, int k) {
+    rowRays_.resize(size_t(tile.x1 - tile.x0));
+    for (int px = tile.x0; px < tile.x1; ++px) {
+        auto [sx, sy] = samplePosition(k, samples_, px, py);
+        const Ray ray = camera_->generateRay(px + sx, py + sy);
+        RowRay& r = rowRays_[size_t(px - tile.x0)];
+        r.direction = ray.direction;
+        auto interval = intersectSphere(ray, boundingRadius_);
+        r.tNear = interval ? interval->tNear : 1;
+        r.tFar = interval ? interval->tFar : -1;  // none: tNear > tFar
+    }
+}
+
+void LaneTileRenderer::pushRowRays(const Tile& tile, int py, const double* blockStart) {
+    const int width = tile.x1 - tile.x0;
+    const int rowBlock = (py - tile.y0) / kConeBlock * ((width + kConeBlock - 1) / kConeBlock);
+    for (int px = tile.x0; px < tile.x1; ++px) {
+        const int column = (px - tile.x0) / kConeBlock;
+        const double start = blockStart[column];
+        if (start == std::numeric_limits<double>::infinity()) continue;  // cone missed
+        const RowRay& r = rowRays_[size_t(px - tile.x0)];
+        const double near = std::max(r.tNear, start);
+        // Not r.tNear <= r.tFar: the sphere missed, or the cone found nothing on it.
+        if (!(near <= r.tFar)) continue;
+        rays_.push(Ray{camera_->position(), r.direction}, near, r.tFar);
+        rayPixel_.push_back((py - tile.y0) * width + (px - tile.x0));
+        rayBlock_.push_back(rowBlock + column);
+    }
+}
+
+void LaneTileRenderer::collectHits(LaneTileStats& stats) {
+    hits_.clear();
+    hitPoints_.clear();
+    for (size_t i = 0; i < traced_.size(); ++i) {
+        const TraceResult& r = traced_[i];
+        stats.marchSteps += r.steps;
+        if (r.end == TraceEnd::Miss) continue;
+        Ray ray{Point3d(rays_.ox[i], rays_.oy[i], rays_.oz[i]),
+                Vector3d(rays_.dx[i], rays_.dy[i], rays_.dz[i])};
+        hits_.push_back({rayPixel_[i], rayBlock_[i], r.t, ray.direction, ray.at(r.tOutside)});
+        hitPoints_.push(hits_.back().outside);
     }
 }
 

@@ -54,6 +54,16 @@ class LaneTileRenderer {
     // One sample per pixel: the rays through the centres of row py of the tile, in rowRays_,
     // for the pixels of the blocks whose start (blockStart_, the row's blocks) is finite.
     void rowRays(const Tile& tile, int py, const double* blockStart);
+    // Several samples per pixel: sample k (samplePosition) of each pixel of row py, in rowRays_.
+    void sampleRowRays(const Tile& tile, int py, int k);
+    // The rays of rowRays_ (row py) that may meet the set, into rays_: from their block's start
+    // (blockStart, the row's blocks) to where they leave the bounding sphere.
+    void pushRowRays(const Tile& tile, int py, const double* blockStart);
+    // The camera rays of sample k of the tile's pixels, in rays_ (with rayPixel_, rayBlock_):
+    // none in the blocks whose cones missed.
+    void sampleRays(const Tile& tile, int k);
+    // The rays of traced_ that ended on the set, into hits_ and hitPoints_.
+    void collectHits(LaneTileStats& stats);
     void shadeHits(LaneTileStats& stats);
     // Hard shadows: one cylinder about the shadow rays of each block of kConeBlock^2 pixels
     // with at least kMinCylinderRays of them shortens them to where it stopped, and leaves out
