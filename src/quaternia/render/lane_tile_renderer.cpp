@@ -8,6 +8,26 @@
 
 namespace quaternia {
 
+namespace {
+
+// A hit's albedo, from its orbit (the estimate at its outside point) where the colouring wants
+// it (else null).
+Color albedoOf(const Shader& shader, const LaneFractal& lanes, const PointEstimate* orbit) {
+    DistanceEstimate orbitOfHit;
+    if (orbit) {
+        orbitOfHit.trap = orbit->trap;
+        if (shader.albedoUsesSmoothIteration()) {
+            orbitOfHit.smoothIteration =
+                orbit->inside
+                    ? lanes.maxIterations
+                    : smoothEscapeCount(orbit->iterations, orbit->radiusSquared, lanes.degree);
+        }
+    }
+    return shader.albedo(orbitOfHit);
+}
+
+}  // namespace
+
 LaneTileRenderer::LaneTileRenderer(const LaneFractal& lanes, const Camera& camera,
                                    const Shader& shader, const MarchSettings& march, int samples,
                                    bool shadowCylinders)
@@ -236,12 +256,27 @@ void LaneTileRenderer::marchCones(const Tile& tile, LaneTileStats& stats) {
 }
 
 void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
+    hitNormals(stats);
+    aimShadowRays();
+    marchShadowRays(stats);
+    if (shader_->occlusionEnabled()) {
+        occlusionPoints_.clear();
+        for (size_t h = 0; h < hits_.size(); ++h) {
+            for (int k = 1; k <= Shader::kOcclusionSamples; ++k)
+                occlusionPoints_.push(hits_[h].outside + normals_[h] * shader_->occlusionHeight(k));
+        }
+        estimateDistances(lanes_, occlusionPoints_, occlusionDistances_, stats.shading);
+    }
+    sampleSurfaces();
+    lightSurfaces(lightConstants_, surfaces_);  // the colours: surfaces_.red, green, blue
+}
+
+void LaneTileRenderer::hitNormals(LaneTileStats& stats) {
     const size_t count = hits_.size();
     // The estimate at each hit's outside point, where the orbit colours the surface: its
     // iteration count is then the M of the analytic normal (JuliaSet::gradientIterations).
     // Without orbit colouring, the normals find their M themselves.
-    const bool orbit = shader_->albedoUsesOrbit();
-    if (orbit) {
+    if (shader_->albedoUsesOrbit()) {
         estimatePoints(lanes_, hitPoints_, hitEstimates_, stats.shading);
         gradientIterations_.resize(count);
         for (size_t h = 0; h < count; ++h)
@@ -250,12 +285,17 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
     } else {
         potentialNormalsAlone(lanes_, hitPoints_, normals_, stats.shading);
     }
-
-    shadowRays_.clear();
-    shadowHit_.clear();
     for (size_t h = 0; h < count; ++h) {
         Vector3d& n = normals_[h];
         if (dot(n, hits_[h].direction) > 0) n = -n;  // seen from inside a thin sheet
+    }
+}
+
+void LaneTileRenderer::aimShadowRays() {
+    shadowRays_.clear();
+    shadowHit_.clear();
+    for (size_t h = 0; h < hits_.size(); ++h) {
+        const Vector3d& n = normals_[h];
         if (shader_->shadows() == Shadows::None || !(shader_->keyDiffuse(n) > 0)) continue;
         Point3d origin =
             shader_->shadowOrigin(hits_[h].outside, n, camera_->pixelFootprint(hits_[h].t));
@@ -265,6 +305,9 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
         shadowRays_.push(ray, 0, interval->tFar);
         shadowHit_.push_back(int(h));
     }
+}
+
+void LaneTileRenderer::marchShadowRays(LaneTileStats& stats) {
     if (shadowCylinders_ && shader_->shadows() == Shadows::Hard) clipShadowRays(stats);
     ShadowMarch shadowMarch;
     shadowMarch.minimumStep = shader_->shadowMinimumStep();
@@ -282,33 +325,16 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
             if (!shadowClear_[r]) shadowVisibility_[r] = marchedVisibility_[marched++];
         }
     }
+}
 
-    if (shader_->occlusionEnabled()) {
-        occlusionPoints_.clear();
-        for (size_t h = 0; h < count; ++h) {
-            for (int k = 1; k <= Shader::kOcclusionSamples; ++k)
-                occlusionPoints_.push(hits_[h].outside + normals_[h] * shader_->occlusionHeight(k));
-        }
-        estimateDistances(lanes_, occlusionPoints_, occlusionDistances_, stats.shading);
-    }
-
-    // Each hit's surface sample, then their lighting in lanes.
-    surfaces_.resize(count);
-    size_t nextShadow = 0;
-    for (size_t h = 0; h < count; ++h) {
+void LaneTileRenderer::sampleSurfaces() {
+    surfaces_.resize(hits_.size());
+    const bool orbit = shader_->albedoUsesOrbit();
+    size_t nextShadow = 0;  // shadowHit_ is in order: the next shadow ray is this hit's or later
+    for (size_t h = 0; h < hits_.size(); ++h) {
         const Vector3d& n = normals_[h];
         const Vector3d& direction = hits_[h].direction;
-        DistanceEstimate orbitOfHit;
-        if (orbit) {
-            const PointEstimate& e = hitEstimates_[h];
-            orbitOfHit.trap = e.trap;
-            if (shader_->albedoUsesSmoothIteration()) {
-                orbitOfHit.smoothIteration =
-                    e.inside ? lanes_.maxIterations
-                             : smoothEscapeCount(e.iterations, e.radiusSquared, lanes_.degree);
-            }
-        }
-        const Color albedo = shader_->albedo(orbitOfHit);
+        const Color albedo = albedoOf(*shader_, lanes_, orbit ? &hitEstimates_[h] : nullptr);
         double visibility = 1;  // no shadows, or the shadow ray leaves the bounding sphere
         if (!(shader_->keyDiffuse(n) > 0)) {
             visibility = 0;
@@ -328,7 +354,6 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
         s.visibility[h] = float(visibility);
         s.occlusion[h] = float(occlusion);
     }
-    lightSurfaces(lightConstants_, surfaces_);  // the colours: surfaces_.red, green, blue
 }
 
 void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {

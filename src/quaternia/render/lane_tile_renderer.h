@@ -64,7 +64,20 @@ class LaneTileRenderer {
     void sampleRays(const Tile& tile, int k);
     // The rays of traced_ that ended on the set, into hits_ and hitPoints_.
     void collectHits(LaneTileStats& stats);
+    // The hits' colours, in surfaces_ (red, green, blue), from their normals, shadow rays and
+    // ambient occlusion.
     void shadeHits(LaneTileStats& stats);
+    // The hits' normals, in normals_, facing the camera; with orbit colouring also the
+    // estimates at the hits (hitEstimates_).
+    void hitNormals(LaneTileStats& stats);
+    // The shadow rays of the hits whose surface faces the key light, in shadowRays_ (with
+    // shadowHit_): none where the ray misses the bounding sphere.
+    void aimShadowRays();
+    // The shadow rays' visibility, in shadowVisibility_.
+    void marchShadowRays(LaneTileStats& stats);
+    // Each hit's surface sample (normal, view direction, albedo, visibility, occlusion), in
+    // surfaces_.
+    void sampleSurfaces();
     // Hard shadows: one cylinder about the shadow rays of each block of kConeBlock^2 pixels
     // with at least kMinCylinderRays of them shortens them to where it stopped, and leaves out
     // of shadowRays_ those it cleared whole (shadowClear_).
