@@ -365,10 +365,33 @@ void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
     // each ray is marched only from its origin to there; a cylinder that gets past every
     // origin clears its rays whole. It stops where the set comes within 1.2 radii: at an
     // occluder, whose rays then meet it on their own, or at the surface the rays start from.
-    const size_t count = shadowHit_.size();
     shadowClear_.clear();
-    if (count == 0) return;
-    // The rays grouped by block, in order within each (a counting sort: hits come in rows).
+    if (shadowHit_.empty()) return;
+    orderShadowRaysByBlock();
+    cylinders_.clear();
+    cylinderRays_.clear();  // the rays of each cylinder: a range of shadowOrder_
+    for (size_t block = 0; block < size_t(tileBlocks_); ++block) {
+        const size_t first = size_t(blockStarts_[block]), end = size_t(blockStarts_[block + 1]);
+        if (end - first >= kMinCylinderRays) pushCylinder(first, end);
+    }
+    if (cylinders_.size() == 0) return;
+    CameraMarch cylinderMarch = march_;
+    cylinderMarch.cone = true;
+    cylinderMarch.epsilon = 1.2;
+    cylinderMarch.pixelAngle = 0;
+    traceCameraRays(lanes_, cylinderMarch, cylinders_, cylinderResults_, stats.shading);
+    // The batch to march: the rays not cleared whole, in their order. (A cylinder stops at the
+    // surface its rays start from, so most frames clear none: then the batch stays as it is.)
+    if (shortenShadowRays() == 0) {
+        shadowClear_.clear();
+        return;
+    }
+    shadowRays_.removeFlagged(shadowClear_);
+}
+
+void LaneTileRenderer::orderShadowRaysByBlock() {
+    // A counting sort: hits come in rows, so the rays of each block stay in order.
+    const size_t count = shadowHit_.size();
     auto blockOf = [&](size_t r) { return size_t(hits_[size_t(shadowHit_[r])].block); };
     blockStarts_.assign(size_t(tileBlocks_) + 1, 0);
     for (size_t r = 0; r < count; ++r)
@@ -379,50 +402,42 @@ void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
     blockFill_.assign(blockStarts_.begin(), blockStarts_.end() - 1);
     for (size_t r = 0; r < count; ++r)
         shadowOrder_[size_t(blockFill_[blockOf(r)]++)] = int(r);
+}
 
+Point3d LaneTileRenderer::shadowRayOrigin(size_t r) const {
+    return Point3d(shadowRays_.ox[r], shadowRays_.oy[r], shadowRays_.oz[r]);
+}
+
+void LaneTileRenderer::pushCylinder(size_t first, size_t end) {
     const Vector3d light = shader_->lightDirection();
-    auto origin = [&](size_t r) {
-        return Point3d(shadowRays_.ox[r], shadowRays_.oy[r], shadowRays_.oz[r]);
-    };
-    cylinders_.clear();
-    cylinderRays_.clear();  // the rays of each cylinder: a range of shadowOrder_
-    for (size_t block = 0; block < size_t(tileBlocks_); ++block) {
-        const size_t first = size_t(blockStarts_[block]), end = size_t(blockStarts_[block + 1]);
-        if (end - first >= kMinCylinderRays) {
-            Vector3d sum;
-            for (size_t k = first; k < end; ++k)
-                sum += Vector3d(origin(size_t(shadowOrder_[k])));
-            const Point3d centre(sum / double(end - first));
-            // The widest offset of an origin from the axis, and the axial extent from the
-            // nearest origin to the farthest exit from the bounding sphere.
-            double widest = 0, nearest = std::numeric_limits<double>::infinity();
-            double farthest = -nearest;
-            for (size_t k = first; k < end; ++k) {
-                const size_t r = size_t(shadowOrder_[k]);
-                const Vector3d offset = origin(r) - centre;
-                const double along = dot(offset, light);
-                widest = std::max(widest, dot(offset, offset) - along * along);
-                nearest = std::min(nearest, along);
-                farthest = std::max(farthest, along + shadowRays_.tFar[r]);
-            }
-            // A margin for rounding, and never a zero radius.
-            const double radius =
-                std::sqrt(std::max(0.0, widest)) * (1 + 1e-6) + 1e-9 * boundingRadius_;
-            cylinders_.push(Ray{centre + light * farthest, -light}, 0, farthest - nearest);
-            cylinders_.spread.push_back(radius);
-            cylinderRays_.push_back({first, end});
-        }
+    Vector3d sum;
+    for (size_t k = first; k < end; ++k)
+        sum += Vector3d(shadowRayOrigin(size_t(shadowOrder_[k])));
+    const Point3d centre(sum / double(end - first));
+    // The widest offset of an origin from the axis, and the axial extent from the nearest
+    // origin to the farthest exit from the bounding sphere.
+    double widest = 0, nearest = std::numeric_limits<double>::infinity();
+    double farthest = -nearest;
+    for (size_t k = first; k < end; ++k) {
+        const size_t r = size_t(shadowOrder_[k]);
+        const Vector3d offset = shadowRayOrigin(r) - centre;
+        const double along = dot(offset, light);
+        widest = std::max(widest, dot(offset, offset) - along * along);
+        nearest = std::min(nearest, along);
+        farthest = std::max(farthest, along + shadowRays_.tFar[r]);
     }
-    if (cylinders_.size() == 0) return;
-    CameraMarch cylinderMarch = march_;
-    cylinderMarch.cone = true;
-    cylinderMarch.epsilon = 1.2;
-    cylinderMarch.pixelAngle = 0;
-    traceCameraRays(lanes_, cylinderMarch, cylinders_, cylinderResults_, stats.shading);
+    // A margin for rounding, and never a zero radius.
+    const double radius = std::sqrt(std::max(0.0, widest)) * (1 + 1e-6) + 1e-9 * boundingRadius_;
+    cylinders_.push(Ray{centre + light * farthest, -light}, 0, farthest - nearest);
+    cylinders_.spread.push_back(radius);
+    cylinderRays_.push_back({first, end});
+}
 
+size_t LaneTileRenderer::shortenShadowRays() {
     // A cylinder is clear from its far end to tOutside (to its end where it missed); on a ray,
     // that is from (far end - origin) . light - tOutside on.
-    shadowClear_.assign(count, 0);
+    const Vector3d light = shader_->lightDirection();
+    shadowClear_.assign(shadowHit_.size(), 0);
     size_t cleared = 0;
     for (size_t c = 0; c < cylinders_.size(); ++c) {
         const TraceResult& result = cylinderResults_[c];
@@ -430,7 +445,7 @@ void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
         const Point3d farEnd(cylinders_.ox[c], cylinders_.oy[c], cylinders_.oz[c]);
         for (size_t k = cylinderRays_[c].first; k < cylinderRays_[c].second; ++k) {
             const size_t r = size_t(shadowOrder_[k]);
-            const double clearFrom = dot(farEnd - origin(r), light) - result.tOutside;
+            const double clearFrom = dot(farEnd - shadowRayOrigin(r), light) - result.tOutside;
             if (whole || clearFrom <= 0) {
                 shadowClear_[r] = 1;
                 ++cleared;
@@ -439,13 +454,7 @@ void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
             }
         }
     }
-    // The batch to march: the rays not cleared whole, in their order. (A cylinder stops at the
-    // surface its rays start from, so most frames clear none: then the batch stays as it is.)
-    if (cleared == 0) {
-        shadowClear_.clear();
-        return;
-    }
-    shadowRays_.removeFlagged(shadowClear_);
+    return cleared;
 }
 
 }  // namespace quaternia

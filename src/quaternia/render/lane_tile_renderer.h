@@ -83,6 +83,14 @@ class LaneTileRenderer {
     // of shadowRays_ those it cleared whole (shadowClear_).
     static constexpr size_t kMinCylinderRays = 4;
     void clipShadowRays(LaneTileStats& stats);
+    // The shadow rays block by block, in shadowOrder_ (block b's from blockStarts_[b]).
+    void orderShadowRaysByBlock();
+    Point3d shadowRayOrigin(size_t r) const;
+    // The cylinder about the shadow rays shadowOrder_[first, end), into cylinders_.
+    void pushCylinder(size_t first, size_t end);
+    // Shortens each cylinder's rays to where it stopped, and flags in shadowClear_ those it
+    // cleared whole; returns how many.
+    size_t shortenShadowRays();
 
     LaneFractal lanes_;
     const Camera* camera_;
