@@ -8,6 +8,26 @@
 
 namespace quaternia {
 
+namespace {
+
+// A hit's albedo, from its orbit (the estimate at its outside point) where the colouring wants
+// it (else null).
+Color albedoOf(const Shader& shader, const LaneFractal& lanes, const PointEstimate* orbit) {
+    DistanceEstimate orbitOfHit;
+    if (orbit) {
+        orbitOfHit.trap = orbit->trap;
+        if (shader.albedoUsesSmoothIteration()) {
+            orbitOfHit.smoothIteration =
+                orbit->inside
+                    ? lanes.maxIterations
+                    : smoothEscapeCount(orbit->iterations, orbit->radiusSquared, lanes.degree);
+        }
+    }
+    return shader.albedo(orbitOfHit);
+}
+
+}  // namespace
+
 LaneTileRenderer::LaneTileRenderer(const LaneFractal& lanes, const Camera& camera,
                                    const Shader& shader, const MarchSettings& march, int samples,
                                    bool shadowCylinders)
@@ -64,61 +84,10 @@ void LaneTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixel
         (width + kConeBlock - 1) / kConeBlock * ((tile.y1 - tile.y0 + kConeBlock - 1) / kConeBlock);
     pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{});
     marchCones(tile, stats);
-    const int blocksAcross = (width + kConeBlock - 1) / kConeBlock;
     for (int k = 0; k < samples_; ++k) {
-        rays_.clear();
-        rayPixel_.clear();
-        rayBlock_.clear();
-        for (int py = tile.y0; py < tile.y1; ++py) {
-            const double* blockRow =
-                blockStart_.data() + size_t((py - tile.y0) / kConeBlock * blocksAcross);
-            const int rowBlock = (py - tile.y0) / kConeBlock * blocksAcross;
-            // A row whose blocks' cones all missed has no ray to march.
-            if (std::all_of(blockRow, blockRow + blocksAcross, [](double start) {
-                    return start == std::numeric_limits<double>::infinity();
-                })) {
-                continue;
-            }
-            if (samples_ == 1) {
-                rowRays(tile, py, blockRow);
-            } else {
-                rowRays_.resize(size_t(width));
-                for (int px = tile.x0; px < tile.x1; ++px) {
-                    auto [sx, sy] = samplePosition(k, samples_, px, py);
-                    const Ray ray = camera_->generateRay(px + sx, py + sy);
-                    RowRay& r = rowRays_[size_t(px - tile.x0)];
-                    r.direction = ray.direction;
-                    auto interval = intersectSphere(ray, boundingRadius_);
-                    r.tNear = interval ? interval->tNear : 1;
-                    r.tFar = interval ? interval->tFar : -1;  // none: tNear > tFar
-                }
-            }
-            for (int px = tile.x0; px < tile.x1; ++px) {
-                const int column = (px - tile.x0) / kConeBlock;
-                const double start = blockRow[column];
-                if (start == std::numeric_limits<double>::infinity()) continue;  // cone missed
-                const RowRay& r = rowRays_[size_t(px - tile.x0)];
-                const double near = std::max(r.tNear, start);
-                // Not r.tNear <= r.tFar: the sphere missed, or the cone found nothing on it.
-                if (!(near <= r.tFar)) continue;
-                rays_.push(Ray{camera_->position(), r.direction}, near, r.tFar);
-                rayPixel_.push_back((py - tile.y0) * width + (px - tile.x0));
-                rayBlock_.push_back(rowBlock + column);
-            }
-        }
+        sampleRays(tile, k);
         traceCameraRays(lanes_, march_, rays_, traced_, stats.camera);
-
-        hits_.clear();
-        hitPoints_.clear();
-        for (size_t i = 0; i < traced_.size(); ++i) {
-            const TraceResult& r = traced_[i];
-            stats.marchSteps += r.steps;
-            if (r.end == TraceEnd::Miss) continue;
-            Ray ray{Point3d(rays_.ox[i], rays_.oy[i], rays_.oz[i]),
-                    Vector3d(rays_.dx[i], rays_.dy[i], rays_.dz[i])};
-            hits_.push_back({rayPixel_[i], rayBlock_[i], r.t, ray.direction, ray.at(r.tOutside)});
-            hitPoints_.push(hits_.back().outside);
-        }
+        collectHits(stats);
         if (hits_.empty()) continue;
         shadeHits(stats);
         for (size_t h = 0; h < hits_.size(); ++h) {
@@ -127,6 +96,74 @@ void LaneTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixel
             pixel.depthSum += hits_[h].t;
             ++pixel.hits;
         }
+    }
+}
+
+void LaneTileRenderer::sampleRays(const Tile& tile, int k) {
+    const int width = tile.x1 - tile.x0;
+    const int blocksAcross = (width + kConeBlock - 1) / kConeBlock;
+    rays_.clear();
+    rayPixel_.clear();
+    rayBlock_.clear();
+    for (int py = tile.y0; py < tile.y1; ++py) {
+        const double* blockRow =
+            blockStart_.data() + size_t((py - tile.y0) / kConeBlock * blocksAcross);
+        // A row whose blocks' cones all missed has no ray to march.
+        if (std::all_of(blockRow, blockRow + blocksAcross, [](double start) {
+                return start == std::numeric_limits<double>::infinity();
+            })) {
+            continue;
+        }
+        if (samples_ == 1) {
+            rowRays(tile, py, blockRow);
+        } else {
+            sampleRowRays(tile, py, k);
+        }
+        pushRowRays(tile, py, blockRow);
+    }
+}
+
+void LaneTileRenderer::sampleRowRays(const Tile& tile, int py, int k) {
+    rowRays_.resize(size_t(tile.x1 - tile.x0));
+    for (int px = tile.x0; px < tile.x1; ++px) {
+        auto [sx, sy] = samplePosition(k, samples_, px, py);
+        const Ray ray = camera_->generateRay(px + sx, py + sy);
+        RowRay& r = rowRays_[size_t(px - tile.x0)];
+        r.direction = ray.direction;
+        auto interval = intersectSphere(ray, boundingRadius_);
+        r.tNear = interval ? interval->tNear : 1;
+        r.tFar = interval ? interval->tFar : -1;  // none: tNear > tFar
+    }
+}
+
+void LaneTileRenderer::pushRowRays(const Tile& tile, int py, const double* blockStart) {
+    const int width = tile.x1 - tile.x0;
+    const int rowBlock = (py - tile.y0) / kConeBlock * ((width + kConeBlock - 1) / kConeBlock);
+    for (int px = tile.x0; px < tile.x1; ++px) {
+        const int column = (px - tile.x0) / kConeBlock;
+        const double start = blockStart[column];
+        if (start == std::numeric_limits<double>::infinity()) continue;  // cone missed
+        const RowRay& r = rowRays_[size_t(px - tile.x0)];
+        const double near = std::max(r.tNear, start);
+        // Not r.tNear <= r.tFar: the sphere missed, or the cone found nothing on it.
+        if (!(near <= r.tFar)) continue;
+        rays_.push(Ray{camera_->position(), r.direction}, near, r.tFar);
+        rayPixel_.push_back((py - tile.y0) * width + (px - tile.x0));
+        rayBlock_.push_back(rowBlock + column);
+    }
+}
+
+void LaneTileRenderer::collectHits(LaneTileStats& stats) {
+    hits_.clear();
+    hitPoints_.clear();
+    for (size_t i = 0; i < traced_.size(); ++i) {
+        const TraceResult& r = traced_[i];
+        stats.marchSteps += r.steps;
+        if (r.end == TraceEnd::Miss) continue;
+        Ray ray{Point3d(rays_.ox[i], rays_.oy[i], rays_.oz[i]),
+                Vector3d(rays_.dx[i], rays_.dy[i], rays_.dz[i])};
+        hits_.push_back({rayPixel_[i], rayBlock_[i], r.t, ray.direction, ray.at(r.tOutside)});
+        hitPoints_.push(hits_.back().outside);
     }
 }
 
@@ -219,12 +256,27 @@ void LaneTileRenderer::marchCones(const Tile& tile, LaneTileStats& stats) {
 }
 
 void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
+    hitNormals(stats);
+    aimShadowRays();
+    marchShadowRays(stats);
+    if (shader_->occlusionEnabled()) {
+        occlusionPoints_.clear();
+        for (size_t h = 0; h < hits_.size(); ++h) {
+            for (int k = 1; k <= Shader::kOcclusionSamples; ++k)
+                occlusionPoints_.push(hits_[h].outside + normals_[h] * shader_->occlusionHeight(k));
+        }
+        estimateDistances(lanes_, occlusionPoints_, occlusionDistances_, stats.shading);
+    }
+    sampleSurfaces();
+    lightSurfaces(lightConstants_, surfaces_);  // the colours: surfaces_.red, green, blue
+}
+
+void LaneTileRenderer::hitNormals(LaneTileStats& stats) {
     const size_t count = hits_.size();
     // The estimate at each hit's outside point, where the orbit colours the surface: its
     // iteration count is then the M of the analytic normal (JuliaSet::gradientIterations).
     // Without orbit colouring, the normals find their M themselves.
-    const bool orbit = shader_->albedoUsesOrbit();
-    if (orbit) {
+    if (shader_->albedoUsesOrbit()) {
         estimatePoints(lanes_, hitPoints_, hitEstimates_, stats.shading);
         gradientIterations_.resize(count);
         for (size_t h = 0; h < count; ++h)
@@ -233,12 +285,17 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
     } else {
         potentialNormalsAlone(lanes_, hitPoints_, normals_, stats.shading);
     }
-
-    shadowRays_.clear();
-    shadowHit_.clear();
     for (size_t h = 0; h < count; ++h) {
         Vector3d& n = normals_[h];
         if (dot(n, hits_[h].direction) > 0) n = -n;  // seen from inside a thin sheet
+    }
+}
+
+void LaneTileRenderer::aimShadowRays() {
+    shadowRays_.clear();
+    shadowHit_.clear();
+    for (size_t h = 0; h < hits_.size(); ++h) {
+        const Vector3d& n = normals_[h];
         if (shader_->shadows() == Shadows::None || !(shader_->keyDiffuse(n) > 0)) continue;
         Point3d origin =
             shader_->shadowOrigin(hits_[h].outside, n, camera_->pixelFootprint(hits_[h].t));
@@ -248,6 +305,9 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
         shadowRays_.push(ray, 0, interval->tFar);
         shadowHit_.push_back(int(h));
     }
+}
+
+void LaneTileRenderer::marchShadowRays(LaneTileStats& stats) {
     if (shadowCylinders_ && shader_->shadows() == Shadows::Hard) clipShadowRays(stats);
     ShadowMarch shadowMarch;
     shadowMarch.minimumStep = shader_->shadowMinimumStep();
@@ -265,33 +325,16 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
             if (!shadowClear_[r]) shadowVisibility_[r] = marchedVisibility_[marched++];
         }
     }
+}
 
-    if (shader_->occlusionEnabled()) {
-        occlusionPoints_.clear();
-        for (size_t h = 0; h < count; ++h) {
-            for (int k = 1; k <= Shader::kOcclusionSamples; ++k)
-                occlusionPoints_.push(hits_[h].outside + normals_[h] * shader_->occlusionHeight(k));
-        }
-        estimateDistances(lanes_, occlusionPoints_, occlusionDistances_, stats.shading);
-    }
-
-    // Each hit's surface sample, then their lighting in lanes.
-    surfaces_.resize(count);
-    size_t nextShadow = 0;
-    for (size_t h = 0; h < count; ++h) {
+void LaneTileRenderer::sampleSurfaces() {
+    surfaces_.resize(hits_.size());
+    const bool orbit = shader_->albedoUsesOrbit();
+    size_t nextShadow = 0;  // shadowHit_ is in order: the next shadow ray is this hit's or later
+    for (size_t h = 0; h < hits_.size(); ++h) {
         const Vector3d& n = normals_[h];
         const Vector3d& direction = hits_[h].direction;
-        DistanceEstimate orbitOfHit;
-        if (orbit) {
-            const PointEstimate& e = hitEstimates_[h];
-            orbitOfHit.trap = e.trap;
-            if (shader_->albedoUsesSmoothIteration()) {
-                orbitOfHit.smoothIteration =
-                    e.inside ? lanes_.maxIterations
-                             : smoothEscapeCount(e.iterations, e.radiusSquared, lanes_.degree);
-            }
-        }
-        const Color albedo = shader_->albedo(orbitOfHit);
+        const Color albedo = albedoOf(*shader_, lanes_, orbit ? &hitEstimates_[h] : nullptr);
         double visibility = 1;  // no shadows, or the shadow ray leaves the bounding sphere
         if (!(shader_->keyDiffuse(n) > 0)) {
             visibility = 0;
@@ -311,7 +354,6 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
         s.visibility[h] = float(visibility);
         s.occlusion[h] = float(occlusion);
     }
-    lightSurfaces(lightConstants_, surfaces_);  // the colours: surfaces_.red, green, blue
 }
 
 void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
@@ -323,10 +365,33 @@ void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
     // each ray is marched only from its origin to there; a cylinder that gets past every
     // origin clears its rays whole. It stops where the set comes within 1.2 radii: at an
     // occluder, whose rays then meet it on their own, or at the surface the rays start from.
-    const size_t count = shadowHit_.size();
     shadowClear_.clear();
-    if (count == 0) return;
-    // The rays grouped by block, in order within each (a counting sort: hits come in rows).
+    if (shadowHit_.empty()) return;
+    orderShadowRaysByBlock();
+    cylinders_.clear();
+    cylinderRays_.clear();  // the rays of each cylinder: a range of shadowOrder_
+    for (size_t block = 0; block < size_t(tileBlocks_); ++block) {
+        const size_t first = size_t(blockStarts_[block]), end = size_t(blockStarts_[block + 1]);
+        if (end - first >= kMinCylinderRays) pushCylinder(first, end);
+    }
+    if (cylinders_.size() == 0) return;
+    CameraMarch cylinderMarch = march_;
+    cylinderMarch.cone = true;
+    cylinderMarch.epsilon = 1.2;
+    cylinderMarch.pixelAngle = 0;
+    traceCameraRays(lanes_, cylinderMarch, cylinders_, cylinderResults_, stats.shading);
+    // The batch to march: the rays not cleared whole, in their order. (A cylinder stops at the
+    // surface its rays start from, so most frames clear none: then the batch stays as it is.)
+    if (shortenShadowRays() == 0) {
+        shadowClear_.clear();
+        return;
+    }
+    shadowRays_.removeFlagged(shadowClear_);
+}
+
+void LaneTileRenderer::orderShadowRaysByBlock() {
+    // A counting sort: hits come in rows, so the rays of each block stay in order.
+    const size_t count = shadowHit_.size();
     auto blockOf = [&](size_t r) { return size_t(hits_[size_t(shadowHit_[r])].block); };
     blockStarts_.assign(size_t(tileBlocks_) + 1, 0);
     for (size_t r = 0; r < count; ++r)
@@ -337,50 +402,42 @@ void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
     blockFill_.assign(blockStarts_.begin(), blockStarts_.end() - 1);
     for (size_t r = 0; r < count; ++r)
         shadowOrder_[size_t(blockFill_[blockOf(r)]++)] = int(r);
+}
 
+Point3d LaneTileRenderer::shadowRayOrigin(size_t r) const {
+    return Point3d(shadowRays_.ox[r], shadowRays_.oy[r], shadowRays_.oz[r]);
+}
+
+void LaneTileRenderer::pushCylinder(size_t first, size_t end) {
     const Vector3d light = shader_->lightDirection();
-    auto origin = [&](size_t r) {
-        return Point3d(shadowRays_.ox[r], shadowRays_.oy[r], shadowRays_.oz[r]);
-    };
-    cylinders_.clear();
-    cylinderRays_.clear();  // the rays of each cylinder: a range of shadowOrder_
-    for (size_t block = 0; block < size_t(tileBlocks_); ++block) {
-        const size_t first = size_t(blockStarts_[block]), end = size_t(blockStarts_[block + 1]);
-        if (end - first >= kMinCylinderRays) {
-            Vector3d sum;
-            for (size_t k = first; k < end; ++k)
-                sum += Vector3d(origin(size_t(shadowOrder_[k])));
-            const Point3d centre(sum / double(end - first));
-            // The widest offset of an origin from the axis, and the axial extent from the
-            // nearest origin to the farthest exit from the bounding sphere.
-            double widest = 0, nearest = std::numeric_limits<double>::infinity();
-            double farthest = -nearest;
-            for (size_t k = first; k < end; ++k) {
-                const size_t r = size_t(shadowOrder_[k]);
-                const Vector3d offset = origin(r) - centre;
-                const double along = dot(offset, light);
-                widest = std::max(widest, dot(offset, offset) - along * along);
-                nearest = std::min(nearest, along);
-                farthest = std::max(farthest, along + shadowRays_.tFar[r]);
-            }
-            // A margin for rounding, and never a zero radius.
-            const double radius =
-                std::sqrt(std::max(0.0, widest)) * (1 + 1e-6) + 1e-9 * boundingRadius_;
-            cylinders_.push(Ray{centre + light * farthest, -light}, 0, farthest - nearest);
-            cylinders_.spread.push_back(radius);
-            cylinderRays_.push_back({first, end});
-        }
+    Vector3d sum;
+    for (size_t k = first; k < end; ++k)
+        sum += Vector3d(shadowRayOrigin(size_t(shadowOrder_[k])));
+    const Point3d centre(sum / double(end - first));
+    // The widest offset of an origin from the axis, and the axial extent from the nearest
+    // origin to the farthest exit from the bounding sphere.
+    double widest = 0, nearest = std::numeric_limits<double>::infinity();
+    double farthest = -nearest;
+    for (size_t k = first; k < end; ++k) {
+        const size_t r = size_t(shadowOrder_[k]);
+        const Vector3d offset = shadowRayOrigin(r) - centre;
+        const double along = dot(offset, light);
+        widest = std::max(widest, dot(offset, offset) - along * along);
+        nearest = std::min(nearest, along);
+        farthest = std::max(farthest, along + shadowRays_.tFar[r]);
     }
-    if (cylinders_.size() == 0) return;
-    CameraMarch cylinderMarch = march_;
-    cylinderMarch.cone = true;
-    cylinderMarch.epsilon = 1.2;
-    cylinderMarch.pixelAngle = 0;
-    traceCameraRays(lanes_, cylinderMarch, cylinders_, cylinderResults_, stats.shading);
+    // A margin for rounding, and never a zero radius.
+    const double radius = std::sqrt(std::max(0.0, widest)) * (1 + 1e-6) + 1e-9 * boundingRadius_;
+    cylinders_.push(Ray{centre + light * farthest, -light}, 0, farthest - nearest);
+    cylinders_.spread.push_back(radius);
+    cylinderRays_.push_back({first, end});
+}
 
+size_t LaneTileRenderer::shortenShadowRays() {
     // A cylinder is clear from its far end to tOutside (to its end where it missed); on a ray,
     // that is from (far end - origin) . light - tOutside on.
-    shadowClear_.assign(count, 0);
+    const Vector3d light = shader_->lightDirection();
+    shadowClear_.assign(shadowHit_.size(), 0);
     size_t cleared = 0;
     for (size_t c = 0; c < cylinders_.size(); ++c) {
         const TraceResult& result = cylinderResults_[c];
@@ -388,7 +445,7 @@ void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
         const Point3d farEnd(cylinders_.ox[c], cylinders_.oy[c], cylinders_.oz[c]);
         for (size_t k = cylinderRays_[c].first; k < cylinderRays_[c].second; ++k) {
             const size_t r = size_t(shadowOrder_[k]);
-            const double clearFrom = dot(farEnd - origin(r), light) - result.tOutside;
+            const double clearFrom = dot(farEnd - shadowRayOrigin(r), light) - result.tOutside;
             if (whole || clearFrom <= 0) {
                 shadowClear_[r] = 1;
                 ++cleared;
@@ -397,13 +454,7 @@ void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
             }
         }
     }
-    // The batch to march: the rays not cleared whole, in their order. (A cylinder stops at the
-    // surface its rays start from, so most frames clear none: then the batch stays as it is.)
-    if (cleared == 0) {
-        shadowClear_.clear();
-        return;
-    }
-    shadowRays_.removeFlagged(shadowClear_);
+    return cleared;
 }
 
 }  // namespace quaternia

@@ -54,12 +54,43 @@ class LaneTileRenderer {
     // One sample per pixel: the rays through the centres of row py of the tile, in rowRays_,
     // for the pixels of the blocks whose start (blockStart_, the row's blocks) is finite.
     void rowRays(const Tile& tile, int py, const double* blockStart);
+    // Several samples per pixel: sample k (samplePosition) of each pixel of row py, in rowRays_.
+    void sampleRowRays(const Tile& tile, int py, int k);
+    // The rays of rowRays_ (row py) that may meet the set, into rays_: from their block's start
+    // (blockStart, the row's blocks) to where they leave the bounding sphere.
+    void pushRowRays(const Tile& tile, int py, const double* blockStart);
+    // The camera rays of sample k of the tile's pixels, in rays_ (with rayPixel_, rayBlock_):
+    // none in the blocks whose cones missed.
+    void sampleRays(const Tile& tile, int k);
+    // The rays of traced_ that ended on the set, into hits_ and hitPoints_.
+    void collectHits(LaneTileStats& stats);
+    // The hits' colours, in surfaces_ (red, green, blue), from their normals, shadow rays and
+    // ambient occlusion.
     void shadeHits(LaneTileStats& stats);
+    // The hits' normals, in normals_, facing the camera; with orbit colouring also the
+    // estimates at the hits (hitEstimates_).
+    void hitNormals(LaneTileStats& stats);
+    // The shadow rays of the hits whose surface faces the key light, in shadowRays_ (with
+    // shadowHit_): none where the ray misses the bounding sphere.
+    void aimShadowRays();
+    // The shadow rays' visibility, in shadowVisibility_.
+    void marchShadowRays(LaneTileStats& stats);
+    // Each hit's surface sample (normal, view direction, albedo, visibility, occlusion), in
+    // surfaces_.
+    void sampleSurfaces();
     // Hard shadows: one cylinder about the shadow rays of each block of kConeBlock^2 pixels
     // with at least kMinCylinderRays of them shortens them to where it stopped, and leaves out
     // of shadowRays_ those it cleared whole (shadowClear_).
     static constexpr size_t kMinCylinderRays = 4;
     void clipShadowRays(LaneTileStats& stats);
+    // The shadow rays block by block, in shadowOrder_ (block b's from blockStarts_[b]).
+    void orderShadowRaysByBlock();
+    Point3d shadowRayOrigin(size_t r) const;
+    // The cylinder about the shadow rays shadowOrder_[first, end), into cylinders_.
+    void pushCylinder(size_t first, size_t end);
+    // Shortens each cylinder's rays to where it stopped, and flags in shadowClear_ those it
+    // cleared whole; returns how many.
+    size_t shortenShadowRays();
 
     LaneFractal lanes_;
     const Camera* camera_;

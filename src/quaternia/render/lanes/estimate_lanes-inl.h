@@ -200,6 +200,93 @@ HWY_INLINE bool settleCertified(D d, V r2, V derivativeSquared, V stopRadius, V 
     return allDone;
 }
 
+// One group of lanes of estimateLanes: |z|^2 and |z'|^2 of the current iterate, and for the
+// lanes done, their |z|^2, |z'|^2 and iteration count where they stopped; kOrbit also keeps
+// the orbit trap (the least |z|^2 up to the first iterate past the bailout).
+template <class D>
+struct EstimateGroup {
+    using V = hn::Vec<D>;
+    using M = hn::Mask<D>;
+    V r2, derivativeSquared, stopRadiusSquared, stopDerivativeSquared, trap, stopIteration;
+    M escaped, done, inside;
+
+    // At z_0, whose derivative is 1.
+    HWY_INLINE void start(D d, const LaneConstants<D>& k, const QuaternionT<V>& z, M live, V one) {
+        r2 = normSquaredPairwise(z);
+        derivativeSquared = one;
+        startLanes(d, r2, live, k.bailoutSquared, k.escapeRadiusSquared, k.estimateRadiusSquared,
+                   k.maxIterationCount, escaped, done, inside);
+        trap = r2;
+        stopIteration = hn::Zero(d);
+        stopRadiusSquared = r2;
+        stopDerivativeSquared = one;
+    }
+
+    // The next iterate z <- s z^d + c, with |z'|^2 <- s^2 d^2 |z|^(2 (d - 1)) |z'|^2 from the
+    // |z|^2 before it.
+    template <bool kQuadratic>
+    HWY_INLINE void iterate(const LaneConstants<D>& k, QuaternionT<V>& z) {
+        if constexpr (kQuadratic) {
+            derivativeSquared = derivativeSquared * (k.gainFactor * r2);
+            z = quadraticStep(z, k.scale, k.c);
+        } else {
+            V gain = k.gainFactor;
+            for (int e = 1; e < k.degree; ++e)
+                gain = gain * r2;
+            derivativeSquared = derivativeSquared * gain;
+            z = powerStep(z, k.degree, k.scale, k.c);
+        }
+        r2 = normSquaredPairwise(z);
+    }
+
+    // The general loop's bookkeeping after an iterate (`iteration`; `last`: z_0 .. z_{N-1}
+    // tested, the lanes not escaped are inside), where an escape need not be final. True when
+    // every lane of the group is done.
+    template <bool kOrbit>
+    HWY_INLINE bool settle(D d, const LaneConstants<D>& k, bool last, V iteration) {
+        const auto settled = hn::Or(escaped, done);  // before this iterate
+        if constexpr (kOrbit) trap = hn::IfThenElse(settled, trap, hn::Min(trap, r2));
+        const auto escapedNow = hn::AndNot(settled, r2 > k.bailoutSquared);
+        escaped = hn::Or(escaped, escapedNow);
+        // An escaped lane stops at the estimate radius, or at once if escape is not certain.
+        auto stopNow = hn::AndNot(
+            done, hn::And(escaped, hn::Or(r2 >= k.estimateRadiusSquared,
+                                          hn::AndNot(r2 > k.escapeRadiusSquared, escapedNow))));
+        if (last) {
+            const auto insideNow = hn::Not(hn::Or(escaped, done));
+            inside = hn::Or(inside, insideNow);
+            stopNow = hn::Or(stopNow, insideNow);
+        }
+        stopRadiusSquared = hn::IfThenElse(stopNow, r2, stopRadiusSquared);
+        stopDerivativeSquared = hn::IfThenElse(stopNow, derivativeSquared, stopDerivativeSquared);
+        stopIteration = hn::IfThenElse(stopNow, iteration, stopIteration);
+        done = hn::Or(done, stopNow);
+        return hn::AllTrue(d, done);
+    }
+
+    // The group's estimates once the loop ended after n - 1 iterates (at `iteration` where it
+    // counted them), and the lanes' iterations in the counters.
+    HWY_INLINE void finish(D d, const LaneConstants<D>& k, bool certified, int n, V iteration,
+                           M live, LaneEstimate<D>& result, LaneCounters& counters) {
+        const auto unfinished = hn::Not(done);  // the continuation cap ended them
+        const V radiusSquared = hn::IfThenElse(unfinished, r2, stopRadiusSquared);
+        V derivative = hn::IfThenElse(unfinished, derivativeSquared, stopDerivativeSquared);
+        counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
+        if (!certified) {
+            stopIteration = hn::IfThenElse(unfinished, iteration, stopIteration);
+            // Utilisation: each lane did useful work until it stopped; the slots are all lanes.
+            counters.laneIterations +=
+                int64_t(hn::GetLane(hn::SumOfLanes(d, hn::IfThenElseZero(live, stopIteration))));
+        }
+        result.inside = inside;
+        result.distance =
+            hn::IfThenZeroElse(inside, closingDistance(d, radiusSquared, derivative, k.stepScale));
+        result.trapSquared = trap;
+        result.iterations = hn::IfThenElse(inside, k.maxIterations, stopIteration);
+        result.radiusSquared = radiusSquared;
+    }
+};
+
 // JuliaSet::estimate (distance.cpp) in lanes: iterate while |z| <= bailout and fewer than N
 // iterates were tested, then, where escape is certain, continue to the estimate radius. Every
 // lane runs the same iterations (no per-lane selects on z, which would lengthen the dependency
@@ -212,7 +299,6 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionT<hn::Ve
                               const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
                               LaneCounters& counters) {
     using V = hn::Vec<D>;
-    using M = hn::Mask<D>;
     using T = hn::TFromD<D>;
     const V one = hn::Set(d, T(1));
     // Where the bailout is at least the certified escape radius (the default), every escape is
@@ -221,22 +307,12 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionT<hn::Ve
     const bool certified = !kOrbit && k.certified;
     // K independent groups of lanes, iterated side by side so that their dependency chains
     // overlap in the pipeline.
-    V r2[K], derivativeSquared[K], stopRadiusSquared[K], stopDerivativeSquared[K], trap[K],
-        stopIteration[K];
-    M escaped[K], done[K], inside[K];
+    EstimateGroup<D> g[K];
     bool allDone = true;
     for (size_t j = 0; j < K; ++j) {
-        r2[j] = normSquaredPairwise(z[j]);
-        derivativeSquared[j] = one;
-        startLanes(d, r2[j], live[j], k.bailoutSquared, k.escapeRadiusSquared,
-                   k.estimateRadiusSquared, k.maxIterationCount, escaped[j], done[j], inside[j]);
-        trap[j] = r2[j];
-        stopIteration[j] = hn::Zero(d);
-        allDone = allDone && hn::AllTrue(d, done[j]);
-        stopRadiusSquared[j] = r2[j];
-        stopDerivativeSquared[j] = one;
+        g[j].start(d, k, z[j], live[j], one);
+        allDone = allDone && hn::AllTrue(d, g[j].done);
     }
-    const int64_t lanes = int64_t(hn::Lanes(d));
     const int iterationCap = k.maxIterationCount + kMaxContinuation;
     int64_t running = 0;  // lane iterations of the certified loop, which keeps no counts
     V iteration = hn::Zero(d);
@@ -244,69 +320,83 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionT<hn::Ve
     for (; n < iterationCap && !allDone; ++n) {
         allDone = true;
         if (!certified) iteration = iteration + one;
+        const bool last = n + 1 >= k.maxIterationCount;  // z_0 .. z_{N-1} tested
         for (size_t j = 0; j < K; ++j) {
-            if constexpr (kQuadratic) {
-                derivativeSquared[j] = derivativeSquared[j] * (k.gainFactor * r2[j]);
-                z[j] = quadraticStep(z[j], k.scale, k.c);
-            } else {
-                V gain = k.gainFactor;
-                for (int e = 1; e < k.degree; ++e)
-                    gain = gain * r2[j];
-                derivativeSquared[j] = derivativeSquared[j] * gain;
-                z[j] = powerStep(z[j], k.degree, k.scale, k.c);
-            }
-            r2[j] = normSquaredPairwise(z[j]);
-            if (certified) {
-                const bool groupDone = settleCertified(
-                    d, r2[j], derivativeSquared[j], k.estimateRadiusSquared, k.bailoutSquared,
-                    n + 1 >= k.maxIterationCount, done[j], inside[j], stopRadiusSquared[j],
-                    stopDerivativeSquared[j], running);
-                allDone = allDone && groupDone;
-                continue;
-            }
-            const auto settled = hn::Or(escaped[j], done[j]);  // before this iterate
-            if constexpr (kOrbit)
-                trap[j] = hn::IfThenElse(settled, trap[j], hn::Min(trap[j], r2[j]));
-            const auto escapedNow = hn::AndNot(settled, r2[j] > k.bailoutSquared);
-            escaped[j] = hn::Or(escaped[j], escapedNow);
-            // An escaped lane stops at the estimate radius, or at once if escape is not certain.
-            auto stopNow = hn::AndNot(
-                done[j],
-                hn::And(escaped[j], hn::Or(r2[j] >= k.estimateRadiusSquared,
-                                           hn::AndNot(r2[j] > k.escapeRadiusSquared, escapedNow))));
-            if (n + 1 >= k.maxIterationCount) {  // z_0 .. z_{N-1} tested: the rest are inside
-                const auto insideNow = hn::Not(hn::Or(escaped[j], done[j]));
-                inside[j] = hn::Or(inside[j], insideNow);
-                stopNow = hn::Or(stopNow, insideNow);
-            }
-            stopRadiusSquared[j] = hn::IfThenElse(stopNow, r2[j], stopRadiusSquared[j]);
-            stopDerivativeSquared[j] =
-                hn::IfThenElse(stopNow, derivativeSquared[j], stopDerivativeSquared[j]);
-            stopIteration[j] = hn::IfThenElse(stopNow, iteration, stopIteration[j]);
-            done[j] = hn::Or(done[j], stopNow);
-            allDone = allDone && hn::AllTrue(d, done[j]);
+            g[j].template iterate<kQuadratic>(k, z[j]);
+            const bool groupDone =
+                certified
+                    ? settleCertified(d, g[j].r2, g[j].derivativeSquared, k.estimateRadiusSquared,
+                                      k.bailoutSquared, last, g[j].done, g[j].inside,
+                                      g[j].stopRadiusSquared, g[j].stopDerivativeSquared, running)
+                    : g[j].template settle<kOrbit>(d, k, last, iteration);
+            allDone = allDone && groupDone;
         }
     }
     counters.laneIterations += running;
-    for (size_t j = 0; j < K; ++j) {
-        const auto unfinished = hn::Not(done[j]);  // the continuation cap ended them
-        const V radiusSquared = hn::IfThenElse(unfinished, r2[j], stopRadiusSquared[j]);
-        V derivative = hn::IfThenElse(unfinished, derivativeSquared[j], stopDerivativeSquared[j]);
-        counters.laneSlots += lanes * int64_t(n - 1);
-        if (!certified) {
-            stopIteration[j] = hn::IfThenElse(unfinished, iteration, stopIteration[j]);
-            // Utilisation: each lane did useful work until it stopped; the slots are all lanes.
-            counters.laneIterations += int64_t(
-                hn::GetLane(hn::SumOfLanes(d, hn::IfThenElseZero(live[j], stopIteration[j]))));
-        }
-        result[j].inside = inside[j];
-        result[j].distance = hn::IfThenZeroElse(
-            inside[j], closingDistance(d, radiusSquared, derivative, k.stepScale));
-        result[j].trapSquared = trap[j];
-        result[j].iterations = hn::IfThenElse(inside[j], k.maxIterations, stopIteration[j]);
-        result[j].radiusSquared = radiusSquared;
-    }
+    for (size_t j = 0; j < K; ++j)
+        g[j].finish(d, k, certified, n, iteration, live[j], result[j], counters);
 }
+
+// One group of lanes of estimateThreeNumbers (below): the orbit as a, b, rho, with aa = a^2 and
+// rest = b^2 + rho (|u|^2 = aa + rest); |u|^2 and |u'|^2 of the lanes still running, a lane's
+// staying where it stopped (merge-masked arithmetic: no separate copies taken when lanes stop, two
+// operations less per iterate); kOrbit also the trap and each lane's iteration count.
+template <class D>
+struct ThreeNumbersGroup {
+    using V = hn::Vec<D>;
+    using M = hn::Mask<D>;
+    V a, b, rho, aa, rest;
+    V r2, derivativeSquared;
+    V trap, stopIteration;  // kOrbit only
+    M done, inside, escaped;
+
+    // At u_0, whose derivative is 1.
+    HWY_INLINE void start(D d, const LaneConstants<D>& k, const QuaternionT<V>& u, M live, V one) {
+        a = u.w, b = u.x;
+        rho = hn::MulAdd(u.z, u.z, u.y * u.y);
+        aa = a * a;
+        rest = hn::MulAdd(b, b, rho);
+        r2 = aa + rest;
+        derivativeSquared = one;
+        startLanes(d, r2, live, k.scaledBailoutSquared, k.scaledEscapeRadiusSquared,
+                   k.scaledEstimateRadiusSquared, k.maxIterationCount, escaped, done, inside);
+        trap = r2;
+        stopIteration = hn::Zero(d);
+    }
+
+    // The next iterate of the running lanes: |u'|^2 <- |u|^2 |u'|^2, then a <- (a^2 - b^2 -
+    // rho) / 2 + 2 s c.w, b <- a b + 2 s c.x, rho <- a^2 rho.
+    HWY_INLINE void iterate(const LaneConstants<D>& k, M running, V half) {
+        derivativeSquared = hn::IfThenElse(running, derivativeSquared * r2, derivativeSquared);
+        const V nextA = hn::MulAdd(half, aa - rest, k.scaledC);
+        b = hn::MulAdd(a, b, k.scaledCi);
+        rho = aa * rho;
+        a = nextA;
+        aa = a * a;
+        rest = hn::MulAdd(b, b, rho);
+        r2 = hn::IfThenElse(running, aa + rest, r2);
+    }
+
+    // The group's estimates once the loop ended after n - 1 iterates.
+    template <bool kOrbit>
+    HWY_INLINE void finish(D d, const LaneConstants<D>& k, int n, LaneEstimate<D>& result,
+                           LaneCounters& counters) {
+        using T = hn::TFromD<D>;
+        const auto unfinished = hn::Not(done);  // the continuation cap ended them
+        const V radiusSquared = r2 * k.inverseFourScaleSquared;
+        const V derivative = derivativeSquared;
+        counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
+        result.inside = inside;
+        result.distance =
+            hn::IfThenZeroElse(inside, closingDistance(d, radiusSquared, derivative, k.stepScale));
+        result.radiusSquared = radiusSquared;
+        if constexpr (kOrbit) {
+            result.trapSquared = trap * k.inverseFourScaleSquared;
+            stopIteration = hn::IfThenElse(unfinished, hn::Set(d, T(n - 1)), stopIteration);
+            result.iterations = hn::IfThenElse(inside, k.maxIterations, stopIteration);
+        }
+    }
+};
 
 // estimateLanes' certified case for float lanes of s z^2 + c and distances alone: the hot loop
 // of the renderer (LaneConstants::threeNumbers). The points come as u = 2 s z
@@ -328,26 +418,11 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
     using M = hn::Mask<D>;
     using T = hn::TFromD<D>;
     const V one = hn::Set(d, T(1)), half = hn::Set(d, T(0.5));
-    V a[K], b[K], rho[K], aa[K], rest[K];  // rest = b^2 + rho, |u|^2 = aa + rest
-    // |u|^2 and |u'|^2 of the lanes still running; a lane's stay where it stopped (merge-masked
-    // arithmetic: no separate copies taken when lanes stop, two operations less per iterate).
-    V r2[K], derivativeSquared[K];
-    V trap[K], stopIteration[K];  // kOrbit only
-    M done[K], inside[K], escaped[K];
+    ThreeNumbersGroup<D> g[K];
     bool allDone = true;
     for (size_t j = 0; j < K; ++j) {
-        a[j] = u[j].w, b[j] = u[j].x;
-        rho[j] = hn::MulAdd(u[j].z, u[j].z, u[j].y * u[j].y);
-        aa[j] = a[j] * a[j];
-        rest[j] = hn::MulAdd(b[j], b[j], rho[j]);
-        r2[j] = aa[j] + rest[j];
-        derivativeSquared[j] = one;
-        startLanes(d, r2[j], live[j], k.scaledBailoutSquared, k.scaledEscapeRadiusSquared,
-                   k.scaledEstimateRadiusSquared, k.maxIterationCount, escaped[j], done[j],
-                   inside[j]);
-        trap[j] = r2[j];
-        stopIteration[j] = hn::Zero(d);
-        allDone = allDone && hn::AllTrue(d, done[j]);
+        g[j].start(d, k, u[j], live[j], one);
+        allDone = allDone && hn::AllTrue(d, g[j].done);
     }
     const int iterationCap = k.maxIterationCount + kMaxContinuation;
     int64_t runningLanes = 0;
@@ -356,49 +431,27 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
         allDone = true;
         const bool last = n + 1 >= k.maxIterationCount;  // z_0 .. z_{N-1} tested
         for (size_t j = 0; j < K; ++j) {
-            const M doneBefore = done[j];
-            const M running = hn::Not(doneBefore);
-            derivativeSquared[j] =
-                hn::IfThenElse(running, derivativeSquared[j] * r2[j], derivativeSquared[j]);
-            const V nextA = hn::MulAdd(half, aa[j] - rest[j], k.scaledC);
-            b[j] = hn::MulAdd(a[j], b[j], k.scaledCi);
-            rho[j] = aa[j] * rho[j];
-            a[j] = nextA;
-            aa[j] = a[j] * a[j];
-            rest[j] = hn::MulAdd(b[j], b[j], rho[j]);
-            r2[j] = hn::IfThenElse(running, aa[j] + rest[j], r2[j]);
+            const M doneBefore = g[j].done;
+            g[j].iterate(k, hn::Not(doneBefore), half);
             if constexpr (kOrbit) {
                 // The trap takes the iterates up to the first past the bailout.
-                const auto settled = hn::Or(escaped[j], doneBefore);
-                trap[j] = hn::IfThenElse(settled, trap[j], hn::Min(trap[j], r2[j]));
-                escaped[j] = hn::Or(escaped[j], r2[j] > k.scaledBailoutSquared);
+                const auto settled = hn::Or(g[j].escaped, doneBefore);
+                g[j].trap = hn::IfThenElse(settled, g[j].trap, hn::Min(g[j].trap, g[j].r2));
+                g[j].escaped = hn::Or(g[j].escaped, g[j].r2 > k.scaledBailoutSquared);
             }
             const bool groupDone =
-                settleFrozen(d, r2[j], k.scaledEstimateRadiusSquared, k.scaledBailoutSquared, last,
-                             done[j], inside[j], runningLanes);
+                settleFrozen(d, g[j].r2, k.scaledEstimateRadiusSquared, k.scaledBailoutSquared,
+                             last, g[j].done, g[j].inside, runningLanes);
             if constexpr (kOrbit) {
-                stopIteration[j] = hn::IfThenElse(hn::AndNot(doneBefore, done[j]), hn::Set(d, T(n)),
-                                                  stopIteration[j]);
+                g[j].stopIteration = hn::IfThenElse(hn::AndNot(doneBefore, g[j].done),
+                                                    hn::Set(d, T(n)), g[j].stopIteration);
             }
             allDone = allDone && groupDone;
         }
     }
     counters.laneIterations += runningLanes;
-    for (size_t j = 0; j < K; ++j) {
-        const auto unfinished = hn::Not(done[j]);  // the continuation cap ended them
-        const V radiusSquared = r2[j] * k.inverseFourScaleSquared;
-        const V derivative = derivativeSquared[j];
-        counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
-        result[j].inside = inside[j];
-        result[j].distance = hn::IfThenZeroElse(
-            inside[j], closingDistance(d, radiusSquared, derivative, k.stepScale));
-        result[j].radiusSquared = radiusSquared;
-        if constexpr (kOrbit) {
-            result[j].trapSquared = trap[j] * k.inverseFourScaleSquared;
-            stopIteration[j] = hn::IfThenElse(unfinished, hn::Set(d, T(n - 1)), stopIteration[j]);
-            result[j].iterations = hn::IfThenElse(inside[j], k.maxIterations, stopIteration[j]);
-        }
-    }
+    for (size_t j = 0; j < K; ++j)
+        g[j].template finish<kOrbit>(d, k, n, result[j], counters);
 }
 
 // The estimates at the current points of the rays in the lanes (o + t d, through the slice):
