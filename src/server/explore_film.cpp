@@ -13,20 +13,6 @@
 namespace quaternia {
 namespace {
 
-const char* interpolationName(Interpolation interpolation) {
-    switch (interpolation) {
-        case Interpolation::Linear:
-            return "linear";
-        case Interpolation::Ease:
-            return "ease";
-        case Interpolation::Step:
-            return "step";
-        case Interpolation::Smooth:
-        default:
-            return "smooth";
-    }
-}
-
 // Every parameter the keys name, in the order first named.
 std::vector<std::string> keyedNames(const AnimationSettings& animation) {
     std::vector<std::string> names;

@@ -1,7 +1,6 @@
 #include "quaternia/scene/animation_file.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <utility>
 
@@ -12,19 +11,6 @@
 
 namespace quaternia {
 namespace {
-
-constexpr std::array<std::pair<const char*, Interpolation>, 4> kInterpolations = {{
-    {"smooth", Interpolation::Smooth},
-    {"linear", Interpolation::Linear},
-    {"ease", Interpolation::Ease},
-    {"step", Interpolation::Step},
-}};
-
-const char* interpolationName(Interpolation interpolation) {
-    for (const auto& [name, value] : kInterpolations)
-        if (value == interpolation) return name;
-    return "smooth";
-}
 
 // Reads one key's table; `at` starts every message ("scene.toml:12:1: animation key 3: ").
 class KeyReader {
@@ -68,8 +54,7 @@ class KeyReader {
 
     Interpolation readInterpolation(const toml::node& node) const {
         if (const auto* text = node.as_string())
-            for (const auto& [name, value] : kInterpolations)
-                if (text->get() == name) return value;
+            if (auto interpolation = interpolationNamed(text->get())) return *interpolation;
         fail("animation.keys",
              "interpolation must be \"smooth\", \"linear\", \"ease\" or "
              "\"step\", got " +

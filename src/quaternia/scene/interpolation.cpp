@@ -3,9 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 namespace quaternia {
 namespace {
+
+constexpr std::pair<const char*, Interpolation> kInterpolationNames[] = {
+    {"smooth", Interpolation::Smooth},
+    {"linear", Interpolation::Linear},
+    {"ease", Interpolation::Ease},
+    {"step", Interpolation::Step},
+};
 
 double sign(double x) {
     return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0;
@@ -83,6 +91,18 @@ double smoothstep(double u) {
 }
 
 }  // namespace
+
+const char* interpolationName(Interpolation interpolation) {
+    for (const auto& [name, value] : kInterpolationNames)
+        if (value == interpolation) return name;
+    return "smooth";
+}
+
+std::optional<Interpolation> interpolationNamed(std::string_view name) {
+    for (const auto& [word, value] : kInterpolationNames)
+        if (name == word) return value;
+    return std::nullopt;
+}
 
 std::vector<double> monotoneSlopes(const std::vector<double>& times,
                                    const std::vector<double>& values) {

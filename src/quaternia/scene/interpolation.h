@@ -15,11 +15,17 @@
 // keys are kept exactly), so a 4D rotation stays a rotation between keys.
 #pragma once
 
+#include <optional>
+#include <string_view>
 #include <vector>
 
 namespace quaternia {
 
 enum class Interpolation { Linear, Smooth, Ease, Step };
+
+// The words scene files use: "smooth", "linear", "ease", "step".
+const char* interpolationName(Interpolation interpolation);
+std::optional<Interpolation> interpolationNamed(std::string_view name);
 
 // What the numbers of a track are, which decides how they may move.
 enum class Motion {
