@@ -104,6 +104,13 @@ std::optional<Interpolation> interpolationNamed(std::string_view name) {
     return std::nullopt;
 }
 
+std::vector<std::pair<std::string, Interpolation>> interpolationChoices() {
+    std::vector<std::pair<std::string, Interpolation>> choices;
+    for (const auto& [word, value] : kInterpolationNames)
+        choices.emplace_back(word, value);
+    return choices;
+}
+
 std::vector<double> monotoneSlopes(const std::vector<double>& times,
                                    const std::vector<double>& values) {
     const std::size_t n = times.size();

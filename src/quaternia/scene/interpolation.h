@@ -16,7 +16,9 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace quaternia {
@@ -26,6 +28,8 @@ enum class Interpolation { Linear, Smooth, Ease, Step };
 // The words scene files use: "smooth", "linear", "ease", "step".
 const char* interpolationName(Interpolation interpolation);
 std::optional<Interpolation> interpolationNamed(std::string_view name);
+// Every word with its interpolation, smooth first (the parameter table's choices).
+std::vector<std::pair<std::string, Interpolation>> interpolationChoices();
 
 // What the numbers of a track are, which decides how they may move.
 enum class Motion {

@@ -346,10 +346,7 @@ std::vector<Parameter> buildParameterTable() {
         integerParameter("animation", "frames", &S::animation, &A::frames, 0, 0, 1000000,
                          "Number of frames; 0 means duration * fps"),
         choiceParameter("animation", "interpolation", &S::animation, &A::interpolation, "smooth",
-                        {{"smooth", Interpolation::Smooth},
-                         {"linear", Interpolation::Linear},
-                         {"ease", Interpolation::Ease},
-                         {"step", Interpolation::Step}},
+                        interpolationChoices(),
                         "How values move from a key to the next, for keys that do not say: smooth "
                         "(through every key, no overshoot), linear, ease (stops at keys) or step"),
         choiceParameter(
