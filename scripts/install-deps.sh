@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev
   ffmpeg
   admesh
+  openmpi-bin libopenmpi-dev
   libcpp-httplib-dev
   python3 chromium chromium-driver python3-selenium
 )

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "quaternia/fractal/fractal.h"
@@ -50,31 +51,45 @@ bool rendersSamples(const RenderSettings& settings, const RenderOptions& options
     return options.opaqueSamples && settings.alpha == AlphaMode::Opaque;
 }
 
-// The result with its image (or samples) and depth pass allocated, nothing rendered yet.
-RenderResult emptyResult(const RenderSettings& settings, const RenderOptions& options) {
+// The pixels to render: RenderOptions::window, checked, or the whole image.
+Tile renderWindow(const RenderSettings& settings, const RenderOptions& options) {
+    if (!options.window) return Tile{0, 0, settings.width, settings.height};
+    const Tile& w = *options.window;
+    if (w.x0 < 0 || w.y0 < 0 || w.x1 > settings.width || w.y1 > settings.height || w.x0 >= w.x1 ||
+        w.y0 >= w.y1 || w.x0 % kWindowAlignment != 0 || w.y0 % kWindowAlignment != 0)
+        throw std::invalid_argument("render window outside the image or not aligned");
+    return w;
+}
+
+// The result with its image (or samples) and depth pass allocated for the window, nothing
+// rendered yet.
+RenderResult emptyResult(const RenderSettings& settings, const RenderOptions& options,
+                         const Tile& window) {
     RenderResult result;
+    const int width = window.x1 - window.x0, height = window.y1 - window.y0;
     if (rendersSamples(settings, options)) {
-        result.samplesFormat = {settings.width, settings.height, settings.bitDepth,
-                                PngColorType::Rgb};
-        result.samples.resize(pngRowBytes(result.samplesFormat) * size_t(settings.height));
+        result.samplesFormat = {width, height, settings.bitDepth, PngColorType::Rgb};
+        result.samples.resize(pngRowBytes(result.samplesFormat) * size_t(height));
     } else {
-        result.image = Image(settings.width, settings.height);
+        result.image = Image(width, height);
     }
-    if (options.depth) result.depth = GrayImage(settings.width, settings.height);
+    if (options.depth) result.depth = GrayImage(width, height);
     return result;
 }
 
 // Where a tile's row of display values is written, and what becomes of it once written: rows of
-// the float image, or a thread's row quantised into the PNG samples.
+// the float image, or a thread's row quantised into the PNG samples. Pixels are named in the
+// image's coordinates; the result holds the window from (x0, y0) on.
 class RowTarget {
   public:
-    RowTarget(RenderResult& result, bool toSamples) : result_(result), toSamples_(toSamples) {
+    RowTarget(RenderResult& result, bool toSamples, int x0, int y0)
+        : result_(result), toSamples_(toSamples), x0_(x0), y0_(y0) {
         if (!toSamples) return;
         sampleRowBytes_ = pngRowBytes(result.samplesFormat);
         samplePixelBytes_ = sampleRowBytes_ / size_t(result.samplesFormat.width);
     }
     Rgba* row(ThreadTotals& thread, const Tile& tile, int py) const {
-        if (!toSamples_) return &result_.image.at(tile.x0, py);
+        if (!toSamples_) return &result_.image.at(tile.x0 - x0_, py - y0_);
         thread.row.resize(size_t(tile.x1 - tile.x0));
         return thread.row.data();
     }
@@ -82,13 +97,14 @@ class RowTarget {
         if (!toSamples_) return;
         quantisePngSamples(&row->r, size_t(tile.x1 - tile.x0), result_.samplesFormat.bitDepth,
                            false,
-                           result_.samples.data() + size_t(py) * sampleRowBytes_ +
-                               size_t(tile.x0) * samplePixelBytes_);
+                           result_.samples.data() + size_t(py - y0_) * sampleRowBytes_ +
+                               size_t(tile.x0 - x0_) * samplePixelBytes_);
     }
 
   private:
     RenderResult& result_;
     bool toSamples_;
+    int x0_, y0_;
     size_t sampleRowBytes_ = 0, samplePixelBytes_ = 0;
 };
 
@@ -108,7 +124,8 @@ RenderStats statsOf(const LaneTileStats& tile, int64_t rays) {
 // into the result.
 class FrameRenderer {
   public:
-    FrameRenderer(const Scene& scene, const RenderOptions& options, RenderResult& result);
+    FrameRenderer(const Scene& scene, const RenderOptions& options, const Tile& window,
+                  RenderResult& result);
     // The SIMD target's name, or "scalar".
     const char* engine() const { return lanes_ ? laneTargetName() : "scalar"; }
     void renderTile(const Tile& tile, ThreadTotals& thread) const {
@@ -142,11 +159,13 @@ class FrameRenderer {
     bool uniformBackground_;
     Color backgroundColor_;
     Rgba backgroundDisplay_;
+    const int windowX0_, windowY0_;  // the result's pixel (0, 0) in the image
     RenderResult& result_;
     RowTarget rows_;
 };
 
-FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, RenderResult& result)
+FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, const Tile& window,
+                             RenderResult& result)
     : fractal_(Fractal::fromScene(scene)),
       camera_(scene.camera, scene.render.width, scene.render.height),
       shader_(scene.shading, fractal_),
@@ -163,8 +182,10 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, R
                        float(scene.shading.backgroundBottom.z)),
       backgroundDisplay_{float(backgroundColor_.x), float(backgroundColor_.y),
                          float(backgroundColor_.z), opaque_ ? 1.0f : 0.0f},
+      windowX0_(window.x0),
+      windowY0_(window.y0),
       result_(result),
-      rows_(result, rendersSamples(scene.render, options)) {
+      rows_(result, rendersSamples(scene.render, options), window.x0, window.y0) {
     if (scene.render.engine == RenderEngine::Simd &&
         scene.render.method == MarchMethod::SphereTracing)
         lanes_ = LaneFractal::from(fractal_, scene.render.precision);
@@ -188,7 +209,7 @@ Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
     if (opaque_) coverage = 1;
     if (depth_) {
         double depth = hits > 0 ? (pixel.depthSum / hits - depthNear_) / depthRange_ : 1;
-        result_.depth.at(px, py) = float(std::clamp(depth, 0.0, 1.0));
+        result_.depth.at(px - windowX0_, py - windowY0_) = float(std::clamp(depth, 0.0, 1.0));
     }
     return Rgba{float(color.x), float(color.y), float(color.z), float(coverage)};
 }
@@ -335,10 +356,12 @@ ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int 
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     validateScene(scene);
     const RenderSettings& settings = scene.render;
-    RenderResult result = emptyResult(settings, options);
-    const FrameRenderer frame(scene, options, result);
+    const Tile window = renderWindow(settings, options);
+    const int width = window.x1 - window.x0, height = window.y1 - window.y0;
+    RenderResult result = emptyResult(settings, options, window);
+    const FrameRenderer frame(scene, options, window, result);
     result.stats.engine = frame.engine();
-    const ParallelOptions parallel = imageParallelOptions(options, settings.width, settings.height);
+    const ParallelOptions parallel = imageParallelOptions(options, width, height);
     RenderWorkspace local;
     std::vector<ThreadTotals>& totals =
         (options.workspace != nullptr ? *options.workspace : local).threads().totals;
@@ -349,9 +372,12 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     }
 
     auto start = std::chrono::steady_clock::now();
-    result.completed = parallelForTiles(
-        settings.width, settings.height, parallel,
-        [&](const Tile& tile, int threadIndex) { frame.renderTile(tile, totals[threadIndex]); });
+    result.completed =
+        parallelForTiles(width, height, parallel, [&](const Tile& tile, int threadIndex) {
+            const Tile shifted{tile.x0 + window.x0, tile.y0 + window.y0, tile.x1 + window.x0,
+                               tile.y1 + window.y0};
+            frame.renderTile(shifted, totals[threadIndex]);
+        });
     result.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.stats.threads = parallel.threads;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "quaternia/image/image.h"
 #include "quaternia/image/png_writer.h"
@@ -40,7 +41,16 @@ struct RenderOptions : WorkOptions {
     // Where render.alpha is "opaque": fill RenderResult::samples instead of the image, each
     // row quantised as soon as its tile has it (while it is in cache), as encodePng would.
     bool opaqueSamples = false;
+    // Only this rectangle of the image (in the image's pixels; none: all of it). The result's
+    // image, samples and depth then hold the window alone, with the same values as the whole
+    // image's render has there, provided x0 and y0 are multiples of kWindowAlignment (the
+    // tiles and cone blocks then fall on the same pixels). quaternia-mpi renders a poster
+    // window by window on many machines.
+    std::optional<Tile> window;
 };
+
+// What RenderOptions::window's corner must be a multiple of: the largest tile side.
+inline constexpr int kWindowAlignment = 64;
 
 struct RenderStats {
     int64_t rays = 0;  // camera rays (pixels x samples)

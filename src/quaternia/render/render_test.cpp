@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <set>
 #include <string>
 #include <vector>
@@ -35,6 +36,57 @@ TEST(Render, TileSizeFollowsTheImageNotTheThreads) {
         EXPECT_EQ(imageParallelOptions(work, 1, 2000).tileSize, 16);
         EXPECT_EQ(imageParallelOptions(work, 640, 360).threads, threads);
     }
+}
+
+// A window of the image renders the very pixels the whole image has there, on both engines and
+// into either result (float image, or PNG samples with the depth pass): quaternia-mpi renders
+// posters window by window.
+TEST(Render, WindowHasTheWholeImagesPixels) {
+    for (RenderEngine engine : {RenderEngine::Simd, RenderEngine::Scalar}) {
+        for (bool samples : {false, true}) {
+            Scene scene = defaultScene();
+            scene.render.width = 150;
+            scene.render.height = 139;
+            scene.render.samples = 2;
+            scene.render.engine = engine;
+            scene.render.alpha = samples ? AlphaMode::Opaque : AlphaMode::Coverage;
+            RenderOptions options;
+            options.depth = true;
+            options.opaqueSamples = samples;
+            const RenderResult whole = render(scene, options);
+            options.window = Tile{64, 64, 150, 139};
+            const RenderResult part = render(scene, options);
+            ASSERT_EQ(part.depth.width(), 86);
+            ASSERT_EQ(part.depth.height(), 75);
+            int hits = 0;
+            for (int y = 64; y < 139; ++y) {
+                for (int x = 64; x < 150; ++x) {
+                    ASSERT_EQ(part.depth.at(x - 64, y - 64), whole.depth.at(x, y));
+                    hits += whole.depth.at(x, y) < 1;
+                    if (samples) continue;
+                    const Rgba a = part.image.at(x - 64, y - 64), b = whole.image.at(x, y);
+                    ASSERT_TRUE(a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a)
+                        << x << "," << y;
+                }
+            }
+            EXPECT_GT(hits, 0);  // the window shows some of the set
+            if (!samples) continue;
+            const size_t row = pngRowBytes(whole.samplesFormat);
+            const size_t partRow = pngRowBytes(part.samplesFormat);
+            for (int y = 64; y < 139; ++y)
+                ASSERT_EQ(0, std::memcmp(part.samples.data() + size_t(y - 64) * partRow,
+                                         whole.samples.data() + size_t(y) * row + 64 * 3, partRow));
+        }
+    }
+}
+
+TEST(Render, WindowMustBeAlignedAndInside) {
+    Scene scene = unitBallScene(100, 100);
+    RenderOptions options;
+    options.window = Tile{32, 0, 100, 100};
+    EXPECT_THROW(render(scene, options), std::invalid_argument);
+    options.window = Tile{64, 0, 101, 100};
+    EXPECT_THROW(render(scene, options), std::invalid_argument);
 }
 
 TEST(Render, SingleSampleAlphaIsBinary) {
