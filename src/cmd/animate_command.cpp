@@ -39,28 +39,6 @@ std::optional<int64_t> parseFrameNumber(const std::string& text) {
     return std::stoll(text);
 }
 
-// Every frame's scene of [first, last] is checked before any work: each is valid, its formula
-// parses, and for a video all have the first one's size.
-void checkFrames(const Scene& film, int64_t first, int64_t last, bool video) {
-    std::map<std::string, bool> formulas;  // formulas checked already
-    int width = 0, height = 0;
-    for (int64_t frame = first; frame <= last; ++frame) {
-        Scene scene = sceneAtFrame(film, frame);
-        validateScene(scene);
-        if (formulas.emplace(scene.fractal.formula, true).second) Fractal::fromScene(scene);
-        if (frame == first) {
-            width = scene.render.width;
-            height = scene.render.height;
-        } else if (video && (scene.render.width != width || scene.render.height != height)) {
-            throw UserError("--video", "--video: frame " + std::to_string(frame) + " is " +
-                                           std::to_string(scene.render.width) + "x" +
-                                           std::to_string(scene.render.height) + ", frame " +
-                                           std::to_string(first) + " " + std::to_string(width) +
-                                           "x" + std::to_string(height) +
-                                           ": a video's frames have one size");
-        }
-    }
-}
 
 // The frame number of a temporary that a killed run left for a frame ("frame_N.png.tmp-XXX").
 std::optional<int64_t> staleFrameTemporary(const std::string& name) {
@@ -70,21 +48,6 @@ std::optional<int64_t> staleFrameTemporary(const std::string& name) {
     return parseFrameNumber(name.substr(prefix.size(), at - prefix.size()));
 }
 
-// Creates the directory, removes the temporaries a killed run left for the frames of [first,
-// last] (only those: another run may be writing other frames into the same directory), and
-// checks that a frame can be written there.
-void prepareDirectory(const std::string& directory, int64_t first, int64_t last, int64_t count) {
-    std::error_code error;
-    fs::create_directories(directory, error);
-    if (error || !fs::is_directory(directory))
-        throw UserError("-o", "cannot create the frame directory '" + directory +
-                                  "': " + (error ? error.message() : "not a directory"));
-    for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
-        auto frame = staleFrameTemporary(entry.path().filename().string());
-        if (frame && *frame >= first && *frame <= last) fs::remove(entry.path(), error);
-    }
-    AtomicFile probe((fs::path(directory) / frameFileName(first, count)).string());
-}
 
 void printSummary(const AnimateCommandOptions& options, const Scene& film, int64_t count,
                   std::pair<int64_t, int64_t> range, const FilmStats& stats) {
@@ -119,17 +82,6 @@ void printSummary(const AnimateCommandOptions& options, const Scene& film, int64
     std::printf("%s\n", jsonText(json).c_str());
 }
 
-// The frames of the range that are to be rendered: those without a file, or all with
-// --overwrite. A file there is complete, since frames are renamed into place.
-std::vector<int64_t> framesToRender(const AnimateCommandOptions& options, int64_t count,
-                                    std::pair<int64_t, int64_t> range) {
-    std::vector<int64_t> frames;
-    for (int64_t frame = range.first; frame <= range.second; ++frame)
-        if (options.overwrite ||
-            !fs::exists(fs::path(options.output) / frameFileName(frame, count)))
-            frames.push_back(frame);
-    return frames;
-}
 
 // One process for the whole range: the parallel-for's workers stay between frames, and the
 // writer thread encodes and writes frame n (and hands it to ffmpeg) while frame n + 1 renders.
@@ -199,6 +151,57 @@ int renderFilm(const AnimateCommandOptions& options, const Scene& film, int64_t 
 }
 
 }  // namespace
+
+// Every frame's scene of [first, last] is checked before any work: each is valid, its formula
+// parses, and for a video all have the first one's size.
+void checkFrames(const Scene& film, int64_t first, int64_t last, bool video) {
+    std::map<std::string, bool> formulas;  // formulas checked already
+    int width = 0, height = 0;
+    for (int64_t frame = first; frame <= last; ++frame) {
+        Scene scene = sceneAtFrame(film, frame);
+        validateScene(scene);
+        if (formulas.emplace(scene.fractal.formula, true).second) Fractal::fromScene(scene);
+        if (frame == first) {
+            width = scene.render.width;
+            height = scene.render.height;
+        } else if (video && (scene.render.width != width || scene.render.height != height)) {
+            throw UserError("--video", "--video: frame " + std::to_string(frame) + " is " +
+                                           std::to_string(scene.render.width) + "x" +
+                                           std::to_string(scene.render.height) + ", frame " +
+                                           std::to_string(first) + " " + std::to_string(width) +
+                                           "x" + std::to_string(height) +
+                                           ": a video's frames have one size");
+        }
+    }
+}
+
+// Creates the directory, removes the temporaries a killed run left for the frames of [first,
+// last] (only those: another run may be writing other frames into the same directory), and
+// checks that a frame can be written there.
+void prepareDirectory(const std::string& directory, int64_t first, int64_t last, int64_t count) {
+    std::error_code error;
+    fs::create_directories(directory, error);
+    if (error || !fs::is_directory(directory))
+        throw UserError("-o", "cannot create the frame directory '" + directory +
+                                  "': " + (error ? error.message() : "not a directory"));
+    for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
+        auto frame = staleFrameTemporary(entry.path().filename().string());
+        if (frame && *frame >= first && *frame <= last) fs::remove(entry.path(), error);
+    }
+    AtomicFile probe((fs::path(directory) / frameFileName(first, count)).string());
+}
+
+// The frames of the range that are to be rendered: those without a file, or all with
+// --overwrite. A file there is complete, since frames are renamed into place.
+std::vector<int64_t> framesToRender(const AnimateCommandOptions& options, int64_t count,
+                                    std::pair<int64_t, int64_t> range) {
+    std::vector<int64_t> frames;
+    for (int64_t frame = range.first; frame <= range.second; ++frame)
+        if (options.overwrite ||
+            !fs::exists(fs::path(options.output) / frameFileName(frame, count)))
+            frames.push_back(frame);
+    return frames;
+}
 
 std::string frameFileName(int64_t frame, int64_t count) {
     int digits = std::max<int>(6, int(std::to_string(count).size()));

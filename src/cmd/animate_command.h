@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -33,6 +35,20 @@ int runAnimateCommand(const AnimateCommandOptions& options);
 // The frames of --frames `text` for a film of `count` frames: [first, last]. Throws UserError
 // ("--frames") for a malformed range or one outside [1, count].
 std::pair<int64_t, int64_t> parseFrameRange(const std::string& text, int64_t count);
+
+// Every frame's scene of [first, last] is checked before any work: each is valid, its formula
+// parses, and for a video all have the first one's size. Throws UserError.
+void checkFrames(const Scene& film, int64_t first, int64_t last, bool video);
+
+// Creates the directory, removes the temporaries a killed run left for the frames of [first,
+// last] (only those: another run may be writing other frames into the same directory), and
+// checks that a frame can be written there. Throws UserError.
+void prepareDirectory(const std::string& directory, int64_t first, int64_t last, int64_t count);
+
+// The frames of the range that are to be rendered: those without a file, or all with
+// --overwrite. A file there is complete, since frames are renamed into place.
+std::vector<int64_t> framesToRender(const AnimateCommandOptions& options, int64_t count,
+                                    std::pair<int64_t, int64_t> range);
 
 // "frame_000042.png": six digits, more where the film has more frames.
 std::string frameFileName(int64_t frame, int64_t count);

@@ -73,10 +73,12 @@ std::string sceneHelpFooter() {
 InterruptScope::InterruptScope() {
     gInterrupted = false;
     previous_ = std::signal(SIGINT, onInterrupt);
+    previousTerminate_ = std::signal(SIGTERM, onInterrupt);
 }
 
 InterruptScope::~InterruptScope() {
     std::signal(SIGINT, previous_);
+    std::signal(SIGTERM, previousTerminate_);
 }
 
 const std::atomic<bool>* InterruptScope::flag() const {

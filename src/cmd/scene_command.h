@@ -49,8 +49,9 @@ void setFromFlag(Scene& scene, const std::string& flag, const std::string& key,
 // The end of a scene-reading command's --help: every scene key, then every preset.
 std::string sceneHelpFooter();
 
-// While alive, Ctrl-C sets flag() instead of ending the process (the work stops early and
-// nothing is written); the previous handler returns on destruction.
+// While alive, Ctrl-C (SIGINT) and SIGTERM (a job's end, as mpirun sends it when a rank fails)
+// set flag() instead of ending the process (the work stops early, nothing is written and no
+// temporary is left); the previous handlers return on destruction.
 class InterruptScope {
   public:
     InterruptScope();
@@ -62,6 +63,7 @@ class InterruptScope {
 
   private:
     void (*previous_)(int);
+    void (*previousTerminate_)(int);
 };
 
 // Runs work(WorkOptions) with the command's --threads, Ctrl-C caught (InterruptScope) as the

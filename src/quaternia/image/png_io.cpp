@@ -197,14 +197,17 @@ std::vector<uint8_t> encodePng(const Image& image, int bitDepth, bool knownOpaqu
     });
 }
 
+void quantiseGray16(const float* values, size_t count, uint8_t* out) {
+    for (size_t i = 0; i < count; ++i)
+        out = putSample16(out, values[i]);
+}
+
 std::vector<uint8_t> encodeGrayPng16(const GrayImage& image) {
     const PngFormat format{image.width(), image.height(), 16, PngColorType::Gray};
     const float* values = image.pixels().data();
     const size_t width = size_t(image.width());
     return writePngRows(format, [&](size_t y, uint8_t* out) {
-        uint8_t* sample = out;
-        for (size_t x = 0; x < width; ++x)
-            sample = putSample16(sample, values[y * width + x]);
+        quantiseGray16(values + y * width, width, out);
         return static_cast<const uint8_t*>(out);
     });
 }

@@ -23,6 +23,8 @@ std::vector<uint8_t> encodePng(const Image& image, int bitDepth, bool opaque = f
 
 // One 16-bit gray channel, values clamped to [0, 1] and rounded as above.
 std::vector<uint8_t> encodeGrayPng16(const GrayImage& image);
+// `count` values as encodeGrayPng16 stores them: 2 bytes each, big-endian.
+void quantiseGray16(const float* values, size_t count, uint8_t* out);
 
 // Encodes, then writes through AtomicFile: the file at `path` is replaced whole or not at all.
 // Throws UserError(path, "cannot write '<path>': <reason>").

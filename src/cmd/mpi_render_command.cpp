@@ -1,0 +1,167 @@
+#include <chrono>
+#include <cstdio>
+#include <optional>
+
+#include "cmd/mpi_boundary.h"
+#include "cmd/mpi_commands.h"
+#include "cmd/mpi_work.h"
+#include "cmd/poster.h"
+#include "quaternia/fractal/fractal.h"
+#include "quaternia/scene/json.h"
+#include "quaternia/scene/parameters.h"
+#include "quaternia/util/atomic_file.h"
+
+namespace quaternia {
+namespace {
+
+// A unit's result message: its number, its work, its samples.
+std::vector<uint8_t> unitMessage(const PosterUnit& unit) {
+    MessageWriter message;
+    const RenderStats& s = unit.stats;
+    message.put(unit.unit).put(s.rays).put(s.hits).put(s.marchSteps).put(s.iterations);
+    message.put(s.shadingEstimates).put(s.laneIterations).put(s.laneSlots);
+    message.putBytes(unit.colour).putBytes(unit.depth);
+    return message.bytes();
+}
+
+PosterUnit unitFromMessage(const std::vector<uint8_t>& bytes) {
+    MessageReader message(bytes);
+    PosterUnit unit;
+    RenderStats& s = unit.stats;
+    unit.unit = message.get<int64_t>();
+    s.rays = message.get<int64_t>();
+    s.hits = message.get<int64_t>();
+    s.marchSteps = message.get<int64_t>();
+    s.iterations = message.get<int64_t>();
+    s.shadingEstimates = message.get<int64_t>();
+    s.laneIterations = message.get<int64_t>();
+    s.laneSlots = message.get<int64_t>();
+    unit.colour = message.getBytes();
+    unit.depth = message.getBytes();
+    return unit;
+}
+
+// The rows of band buffers rank 0 holds: enough that every rank has units to work on while the
+// oldest band waits for its last unit (two units per rank ahead), and at least two bands.
+int64_t windowBandsFor(const PosterLayout& layout, int ranks) {
+    return std::max<int64_t>(2, (2 * int64_t(ranks) + layout.unitsAcross - 1) / layout.unitsAcross + 1);
+}
+
+void printSummary(const RenderCommandOptions& options, const Scene& scene, const RenderStats& stats,
+                  const std::vector<RankShare>& shares, const std::vector<int64_t>& pixels,
+                  size_t windowBytes) {
+    const double raysPerSecond = stats.seconds > 0 ? double(stats.rays) / stats.seconds : 0;
+    if (!options.json) {
+        std::printf("quaternia: wrote %s (%dx%d, %d sample%s per pixel) in %.2f s, %.3g rays/s, "
+                    "%zu ranks\n",
+                    options.output.c_str(), scene.render.width, scene.render.height,
+                    scene.render.samples, scene.render.samples == 1 ? "" : "s", stats.seconds,
+                    raysPerSecond, shares.size());
+        const double total = double(scene.render.width) * double(scene.render.height);
+        for (size_t rank = 0; rank < shares.size(); ++rank)
+            std::printf("  rank %zu: %lld units, %.1f%% of the pixels, %.2f s rendering, peak "
+                        "%.0f MiB resident\n",
+                        rank, (long long)shares[rank].items, 100.0 * double(pixels[rank]) / total,
+                        shares[rank].busySeconds, double(shares[rank].peakResidentKiB) / 1024);
+        return;
+    }
+    Json json;
+    json["command"] = "render";
+    json["output"] = options.output;
+    json["depth_output"] = options.depthOutput.empty() ? Json() : Json(options.depthOutput);
+    json["width"] = scene.render.width;
+    json["height"] = scene.render.height;
+    json["samples"] = scene.render.samples;
+    json["formula"] = scene.fractal.formula;
+    json["c"] = scene.fractal.c;
+    json["ranks"] = shares.size();
+    json["threads_per_rank"] = resolveThreadCount(options.threads);
+    json["seconds"] = stats.seconds;
+    json["rays"] = stats.rays;
+    json["rays_per_second"] = raysPerSecond;
+    json["hits"] = stats.hits;
+    json["march_steps"] = stats.marchSteps;
+    json["iterations"] = stats.iterations;
+    json["shading_estimates"] = stats.shadingEstimates;
+    json["engine"] = stats.engine;
+    json["band_window_bytes"] = windowBytes;
+    Json ranks = Json::array();
+    for (size_t rank = 0; rank < shares.size(); ++rank) {
+        Json share;
+        share["rank"] = rank;
+        share["units"] = shares[rank].items;
+        share["pixels"] = pixels[rank];
+        share["render_seconds"] = shares[rank].busySeconds;
+        share["peak_rss_kib"] = shares[rank].peakResidentKiB;
+        ranks.push_back(share);
+    }
+    json["per_rank"] = ranks;
+    std::printf("%s\n", jsonText(json).c_str());
+}
+
+}  // namespace
+
+int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
+    Scene scene;
+    std::optional<AtomicFile> output, depthOutput;
+    const int setUp = setUpOnEveryRank(mpi, [&] {
+        scene = sceneFromOptions(options);
+        validateScene(scene);
+        Fractal::fromScene(scene);
+        if (mpi.rank() != 0) return;
+        output.emplace(options.output);
+        if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);
+    });
+    if (setUp != 0) return setUp;
+
+    return runOrAbort(mpi, [&] {
+        const PosterLayout layout(scene.render.width, scene.render.height);
+        const PosterFormat format = PosterFormat::of(scene, !options.depthOutput.empty());
+        InterruptScope interrupt;
+        RenderWorkspace workspace;  // rank 0's local thread or a worker's one loop: one user
+        const char* engine = "";
+        WorkItems items;
+        items.count = layout.units();
+        items.run = [&](int64_t unit) {
+            RenderOptions renderOptions;
+            renderOptions.threads = options.threads;
+            renderOptions.cancel = interrupt.flag();
+            renderOptions.workspace = &workspace;
+            std::optional<PosterUnit> rendered =
+                renderPosterUnit(scene, layout, format, unit, renderOptions);
+            if (!rendered) return std::vector<uint8_t>();
+            engine = rendered->stats.engine;
+            return unitMessage(*rendered);
+        };
+        if (mpi.rank() != 0) return workOnItems(items, interrupt.flag()) ? 0 : 130;
+
+        PosterAssembler assembler(layout, format, *output, depthOutput ? &*depthOutput : nullptr,
+                                  windowBandsFor(layout, mpi.size()), options.threads);
+        RenderStats stats;
+        std::vector<int64_t> pixels(size_t(mpi.size()));
+        items.mayStart = [&](int64_t unit) { return assembler.mayStart(unit); };
+        items.take = [&](int source, const std::vector<uint8_t>& bytes) {
+            const PosterUnit unit = unitFromMessage(bytes);
+            assembler.add(unit);
+            stats += unit.stats;
+            const Tile window = layout.window(unit.unit);
+            pixels[size_t(source)] += int64_t(window.x1 - window.x0) * (window.y1 - window.y0);
+        };
+        ProgressBar bar("rendering", !options.json && ProgressBar::stderrIsTerminal());
+        items.progress = [&](double fraction) { bar.update(fraction); };
+        const auto start = std::chrono::steady_clock::now();
+        const std::vector<RankShare> shares = handOutWork(mpi, items, interrupt.flag());
+        bar.finish();
+        if (shares.empty()) return reportInterrupted();
+        std::optional<AtomicFile> rgb = assembler.finish();
+        (rgb ? *rgb : *output).commit();
+        if (depthOutput) depthOutput->commit();
+        stats.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats.engine = engine;
+        printSummary(options, scene, stats, shares, pixels, assembler.windowBytes());
+        return 0;
+    });
+}
+
+}  // namespace quaternia
