@@ -19,6 +19,7 @@
 #include <new>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 #include "quaternia/image/png_lanes.h"
 #include "quaternia/image/png_writer.h"
@@ -178,7 +179,81 @@ bool readFileBytes(const std::string& path, std::vector<uint8_t>& bytes, std::st
     return true;
 }
 
+// The header of a file read as stored (PngRowReader): only the formats PngFormat names.
+// Trivially destructible locals only.
+bool readRawHeader(png_structp png, png_infop info, FILE* file, PngFormat* format) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_init_io(png, file);
+    png_read_info(png, info);
+    if (png_get_interlace_type(png, info) != PNG_INTERLACE_NONE)
+        png_error(png, "interlaced PNGs are not read row by row");
+    const int colorType = png_get_color_type(png, info), bitDepth = png_get_bit_depth(png, info);
+    if (colorType != PNG_COLOR_TYPE_GRAY && colorType != PNG_COLOR_TYPE_RGB &&
+        colorType != PNG_COLOR_TYPE_RGB_ALPHA)
+        png_error(png, "only gray, RGB and RGBA PNGs are read row by row");
+    if (bitDepth != 8 && bitDepth != 16)
+        png_error(png, "only 8- and 16-bit PNGs are read row by row");
+    format->width = int(png_get_image_width(png, info));
+    format->height = int(png_get_image_height(png, info));
+    format->bitDepth = bitDepth;
+    format->colorType = PngColorType(colorType);
+    png_start_read_image(png);
+    return true;
+}
+
+// Trivially destructible locals only.
+bool readRawRow(png_structp png, png_bytep row, bool last) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_row(png, row, nullptr);
+    if (last) png_read_end(png, nullptr);
+    return true;
+}
+
 }  // namespace
+
+struct PngRowReader::State {
+    using File = std::unique_ptr<FILE, int (*)(FILE*)>;
+    ErrorState errors;  // before reader, whose libpng struct points to it
+    File file;
+    PngReader reader{&errors};
+    std::string path;
+    PngFormat format;
+    size_t rowsRead = 0;
+
+    State(File opened, const std::string& name) : file(std::move(opened)), path(name) {}
+    std::runtime_error error(const char* reason) const {
+        return std::runtime_error("cannot read PNG '" + path + "': " + reason);
+    }
+};
+
+PngRowReader::PngRowReader(const std::string& path) {
+    State::File file(std::fopen(path.c_str(), "rb"), std::fclose);
+    if (!file) throw std::runtime_error("cannot open '" + path + "': " + errnoText(errno));
+    state_ = std::make_unique<State>(std::move(file), path);
+    if (!readRawHeader(state_->reader.png(), state_->reader.info(), state_->file.get(),
+                       &state_->format))
+        throw state_->error(state_->errors.message);
+}
+
+PngRowReader::~PngRowReader() = default;
+
+const PngFormat& PngRowReader::format() const {
+    return state_->format;
+}
+
+size_t PngRowReader::rowsRead() const {
+    return state_->rowsRead;
+}
+
+void PngRowReader::readRow(std::span<uint8_t> row) {
+    State& state = *state_;
+    if (row.size() != pngRowBytes(state.format))
+        throw state.error("a row read into room of the wrong size");
+    if (state.rowsRead >= size_t(state.format.height)) throw state.error("read past the last row");
+    const bool last = state.rowsRead + 1 == size_t(state.format.height);
+    if (!readRawRow(state.reader.png(), row.data(), last)) throw state.error(state.errors.message);
+    ++state.rowsRead;
+}
 
 std::vector<uint8_t> encodePng(const Image& image, int bitDepth, bool knownOpaque) {
     if (bitDepth != 8 && bitDepth != 16)

@@ -1,15 +1,19 @@
 // PNG files: RGBA (or RGB, when opaque) images at 8 or 16 bits per channel, 16-bit gray depth
 // passes, and reading any PNG back as an Image. Encoding works to memory with our own parallel
 // writer (png_writer.h), so the same bytes can go to a file (atomically, through AtomicFile) or
-// over HTTP; decoding goes through libpng.
+// over HTTP; decoding goes through libpng, which also reads a file row by row as it is stored
+// (PngRowReader).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "quaternia/image/image.h"
+#include "quaternia/image/png_writer.h"
 
 namespace quaternia {
 
@@ -39,5 +43,30 @@ Image decodePng(std::span<const uint8_t> bytes);
 
 // Reads and decodes a file. Throws UserError(path, "cannot read PNG '<path>': <reason>").
 Image readPng(const std::string& path);
+
+// A PNG file's rows one at a time, as stored: 8- or 16-bit samples (16-bit ones big-endian),
+// nothing transformed, so that a file from writePngRows reads back as the rows given to it. For
+// non-interlaced gray, RGB or RGBA files of 8 or 16 bits (the formats PngFormat names), read
+// with one row in memory. Every error (the file, a format it does not read, malformed data)
+// is a std::runtime_error.
+class PngRowReader {
+  public:
+    // Opens the file and reads its header.
+    explicit PngRowReader(const std::string& path);
+    ~PngRowReader();
+    PngRowReader(const PngRowReader&) = delete;
+    PngRowReader& operator=(const PngRowReader&) = delete;
+
+    const PngFormat& format() const;
+    size_t rowsRead() const;
+
+    // The next row into `row`, which holds exactly pngRowBytes(format()) bytes. After the last
+    // one the rest of the file is read and checked too. Throws past the last row.
+    void readRow(std::span<uint8_t> row);
+
+  private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
 
 }  // namespace quaternia

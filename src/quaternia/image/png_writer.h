@@ -1,7 +1,8 @@
 // Our own PNG writer, in place of libpng's: libpng filters and deflates one row after another on
 // one thread, which made writing a 1080p frame a fifth of a whole render command. Here the rows
 // are cut into fixed pieces that are filtered and deflated in parallel (as pigz does), and the
-// pieces, joined, form one ordinary zlib stream that any decoder reads.
+// pieces, joined, form one ordinary zlib stream that any decoder reads (png_pieces.h; the same
+// pieces are written as their rows arrive by PngStreamWriter, png_stream_writer.h).
 //
 // The file is always the same bytes for the same samples, whatever the number of threads: the
 // pieces are cut from the image's layout alone, and each is compressed on its own from the same
@@ -47,6 +48,9 @@ std::vector<uint8_t> writePngBytes(const PngFormat& format, std::span<const uint
 // rows, or `scratch` (room for one row) filled and returned. Called from several threads at
 // once, and for some rows more than once, so it must be a pure function of y.
 using PngRowSource = std::function<const uint8_t*(size_t y, uint8_t* scratch)>;
+
+// Where an encoder's bytes go: each call appends the next bytes of the file.
+using PngSink = std::function<void(std::span<const uint8_t> bytes)>;
 
 // writePngBytes with the rows made as they are needed, piece by piece on every core (a frame's
 // quantised samples then never exist whole: a 1080p frame's 6 MB and two passes over them less).
