@@ -39,7 +39,6 @@ std::optional<int64_t> parseFrameNumber(const std::string& text) {
     return std::stoll(text);
 }
 
-
 // The frame number of a temporary that a killed run left for a frame ("frame_N.png.tmp-XXX").
 std::optional<int64_t> staleFrameTemporary(const std::string& name) {
     const std::string prefix = "frame_", middle = ".png.tmp-";
@@ -47,7 +46,6 @@ std::optional<int64_t> staleFrameTemporary(const std::string& name) {
     if (!name.starts_with(prefix) || at == std::string::npos) return std::nullopt;
     return parseFrameNumber(name.substr(prefix.size(), at - prefix.size()));
 }
-
 
 void printSummary(const AnimateCommandOptions& options, const Scene& film, int64_t count,
                   std::pair<int64_t, int64_t> range, const FilmStats& stats) {
@@ -81,7 +79,6 @@ void printSummary(const AnimateCommandOptions& options, const Scene& film, int64
     json["threads"] = stats.threads;
     std::printf("%s\n", jsonText(json).c_str());
 }
-
 
 // One process for the whole range: the parallel-for's workers stay between frames, and the
 // writer thread encodes and writes frame n (and hands it to ffmpeg) while frame n + 1 renders.

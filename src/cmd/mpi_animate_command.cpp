@@ -37,13 +37,13 @@ void printSummary(const AnimateCommandOptions& options, const Scene& film, int64
                   const std::vector<RankShare>& shares) {
     const int64_t skipped = range.second - range.first + 1 - rendered;
     if (!options.json) {
-        std::printf("quaternia: %lld frame%s rendered, %lld skipped (frames %lld-%lld of %lld, "
-                    "%dx%d) into %s in %.2f s on %zu ranks%s%s\n",
-                    (long long)rendered, rendered == 1 ? "" : "s", (long long)skipped,
-                    (long long)range.first, (long long)range.second, (long long)count,
-                    film.render.width, film.render.height, options.output.c_str(), seconds,
-                    shares.size(), options.video.empty() ? "" : ", video ",
-                    options.video.c_str());
+        std::printf(
+            "quaternia: %lld frame%s rendered, %lld skipped (frames %lld-%lld of %lld, "
+            "%dx%d) into %s in %.2f s on %zu ranks%s%s\n",
+            (long long)rendered, rendered == 1 ? "" : "s", (long long)skipped,
+            (long long)range.first, (long long)range.second, (long long)count, film.render.width,
+            film.render.height, options.output.c_str(), seconds, shares.size(),
+            options.video.empty() ? "" : ", video ", options.video.c_str());
         for (size_t rank = 0; rank < shares.size(); ++rank)
             std::printf("  rank %zu: %lld frames, %.2f s rendering, peak %.0f MiB resident\n", rank,
                         (long long)shares[rank].items, shares[rank].busySeconds,
@@ -89,7 +89,8 @@ int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
     std::vector<int64_t> frames;
     const int setUp = setUpOnEveryRank(mpi, [&] {
         if (options.printFrame)
-            throw UserError("--print-frame", "--print-frame: use `quaternia animate` to print a frame");
+            throw UserError("--print-frame",
+                            "--print-frame: use `quaternia animate` to print a frame");
         film = sceneFromOptions(options);
         validateAnimation(film);
         count = filmFrameCount(film);

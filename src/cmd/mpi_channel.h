@@ -67,8 +67,9 @@ class MessageWriter {
     template <class T>
     MessageWriter& put(const T& value) {
         static_assert(std::is_trivially_copyable_v<T>);
-        const auto* bytes = reinterpret_cast<const uint8_t*>(&value);
-        bytes_.insert(bytes_.end(), bytes, bytes + sizeof(T));
+        const size_t at = bytes_.size();
+        bytes_.resize(at + sizeof(T));
+        std::memcpy(bytes_.data() + at, &value, sizeof(T));
         return *this;
     }
     MessageWriter& putBytes(const std::vector<uint8_t>& bytes) {

@@ -44,7 +44,8 @@ PosterUnit unitFromMessage(const std::vector<uint8_t>& bytes) {
 // The rows of band buffers rank 0 holds: enough that every rank has units to work on while the
 // oldest band waits for its last unit (two units per rank ahead), and at least two bands.
 int64_t windowBandsFor(const PosterLayout& layout, int ranks) {
-    return std::max<int64_t>(2, (2 * int64_t(ranks) + layout.unitsAcross - 1) / layout.unitsAcross + 1);
+    return std::max<int64_t>(
+        2, (2 * int64_t(ranks) + layout.unitsAcross - 1) / layout.unitsAcross + 1);
 }
 
 void printSummary(const RenderCommandOptions& options, const Scene& scene, const RenderStats& stats,
@@ -52,17 +53,18 @@ void printSummary(const RenderCommandOptions& options, const Scene& scene, const
                   size_t windowBytes) {
     const double raysPerSecond = stats.seconds > 0 ? double(stats.rays) / stats.seconds : 0;
     if (!options.json) {
-        std::printf("quaternia: wrote %s (%dx%d, %d sample%s per pixel) in %.2f s, %.3g rays/s, "
-                    "%zu ranks\n",
-                    options.output.c_str(), scene.render.width, scene.render.height,
-                    scene.render.samples, scene.render.samples == 1 ? "" : "s", stats.seconds,
-                    raysPerSecond, shares.size());
+        std::printf(
+            "quaternia: wrote %s (%dx%d, %d sample%s per pixel) in %.2f s, %.3g rays/s, "
+            "%zu ranks\n",
+            options.output.c_str(), scene.render.width, scene.render.height, scene.render.samples,
+            scene.render.samples == 1 ? "" : "s", stats.seconds, raysPerSecond, shares.size());
         const double total = double(scene.render.width) * double(scene.render.height);
         for (size_t rank = 0; rank < shares.size(); ++rank)
-            std::printf("  rank %zu: %lld units, %.1f%% of the pixels, %.2f s rendering, peak "
-                        "%.0f MiB resident\n",
-                        rank, (long long)shares[rank].items, 100.0 * double(pixels[rank]) / total,
-                        shares[rank].busySeconds, double(shares[rank].peakResidentKiB) / 1024);
+            std::printf(
+                "  rank %zu: %lld units, %.1f%% of the pixels, %.2f s rendering, peak "
+                "%.0f MiB resident\n",
+                rank, (long long)shares[rank].items, 100.0 * double(pixels[rank]) / total,
+                shares[rank].busySeconds, double(shares[rank].peakResidentKiB) / 1024);
         return;
     }
     Json json;

@@ -66,7 +66,7 @@ def test_render_is_byte_identical(tmp):
             assert summary["ranks"] == ranks and len(summary["per_rank"]) == ranks
             assert sum(r["pixels"] for r in summary["per_rank"]) == 1100 * 150
             assert sum(r["units"] for r in summary["per_rank"]) == 6
-            assert summary["rays"] == 1100 * 150 * (2 if n == 0 else 1)
+            assert summary["rays"] == 1100 * 150 * summary["samples"]
 
 
 def test_animate_is_byte_identical(tmp):
@@ -139,7 +139,8 @@ def test_rank_zero_streams_the_png(tmp):
     out = tmp / "big.png"
     size = 6144
     done = mpi(2, "render", "--width", str(size), "--height", str(size), "--set",
-               "render.alpha=\"opaque\"", "--set", "camera.fov=10", "-o", str(out), "--json")
+               "render.alpha=\"opaque\"", "--set", "render.samples=1", "--set",
+               "camera.fov=150", "-o", str(out), "--json")
     summary = json.loads(done.stdout)
     image_kib = size * size * 3 // 1024
     rss = summary["per_rank"][0]["peak_rss_kib"]

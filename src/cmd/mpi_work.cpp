@@ -121,7 +121,8 @@ std::vector<RankShare> handOutWork(const MpiSession& mpi, const WorkItems& items
     auto finished = [&](int source, const std::vector<uint8_t>& result) {
         items.take(source, result);
         ++done;
-        if (items.progress) items.progress(double(done) / double(std::max<int64_t>(1, items.count)));
+        if (items.progress)
+            items.progress(double(done) / double(std::max<int64_t>(1, items.count)));
     };
     while (done < items.count || summaries < workers) {
         if (cancel != nullptr && cancel->load()) return {};

@@ -101,8 +101,7 @@ size_t PosterAssembler::windowBytes() const {
 void PosterAssembler::add(const PosterUnit& unit) {
     if (unit.unit < 0 || unit.unit >= layout_.units() || !mayStart(unit.unit) ||
         layout_.bandOf(unit.unit) < nextBand_)
-        throw std::invalid_argument("poster unit " + std::to_string(unit.unit) +
-                                    " is not awaited");
+        throw std::invalid_argument("poster unit " + std::to_string(unit.unit) + " is not awaited");
     const Tile window = layout_.window(unit.unit);
     const size_t width = size_t(window.x1 - window.x0), rows = size_t(window.y1 - window.y0);
     const size_t pixelBytes = format_.colourPixelBytes();
@@ -130,7 +129,8 @@ void PosterAssembler::add(const PosterUnit& unit) {
         everyAlphaMaximal_ = alphaAllMaximal(unit.colour, format_.bitDepth);
     --band.unitsMissing;
     // Every whole band from the next one on goes to the files, in order.
-    for (auto next = pending_.find(nextBand_); next != pending_.end() && next->second.unitsMissing == 0;
+    for (auto next = pending_.find(nextBand_);
+         next != pending_.end() && next->second.unitsMissing == 0;
          next = pending_.find(nextBand_)) {
         writeBand(next->second, nextBand_);
         pending_.erase(next);
@@ -156,11 +156,11 @@ std::optional<AtomicFile> PosterAssembler::finish() {
     PngStreamWriter rgbPng(colourFormat(layout_, format_, false), sinkInto(rgb), threads_);
     PngRowReader reader(colourFile_.temporaryPath());
     const size_t sampleBytes = size_t(format_.bitDepth / 8), width = size_t(layout_.width);
-    std::vector<uint8_t> row(width * 3 * sampleBytes);
+    std::vector<uint8_t> rgba(width * 4 * sampleBytes), row(width * 3 * sampleBytes);
     for (int y = 0; y < layout_.height; ++y) {
-        const uint8_t* rgba = reader.nextRow();
+        reader.readRow(rgba);
         for (size_t x = 0; x < width; ++x)
-            std::memcpy(row.data() + x * 3 * sampleBytes, rgba + x * 4 * sampleBytes,
+            std::memcpy(row.data() + x * 3 * sampleBytes, rgba.data() + x * 4 * sampleBytes,
                         3 * sampleBytes);
         rgbPng.addRows(row, 1);
     }

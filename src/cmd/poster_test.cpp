@@ -69,7 +69,8 @@ TEST(Poster, AssembledFromUnitsInAnyOrderIsTheRendersPng) {
 
         const PosterLayout layout(1100, 140);
         const PosterFormat format = PosterFormat::of(scene, true);
-        const std::string path = (dir / "poster.png").string(), depthPath = (dir / "depth.png").string();
+        const std::string path = (dir / "poster.png").string(),
+                          depthPath = (dir / "depth.png").string();
         AtomicFile colour(path), depth(depthPath);
         PosterAssembler assembler(layout, format, colour, &depth, 2, 2);
         EXPECT_FALSE(assembler.mayStart(4));  // band 2: beyond the window of 2 bands
@@ -93,7 +94,8 @@ TEST(Poster, AssembledFromUnitsInAnyOrderIsTheRendersPng) {
         if (!c.fillFrame) {
             const Image image = readPng(path);
             std::set<float> alphas;
-            for (const Rgba& p : image.pixels()) alphas.insert(p.a);
+            for (const Rgba& p : image.pixels())
+                alphas.insert(p.a);
             EXPECT_EQ(alphas.size() > 1, c.alpha == AlphaMode::Coverage);
         }
     }

@@ -69,7 +69,8 @@ int runRenderCommand(const RenderCommandOptions& options) {
     if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);
 
     PngRender result = runInterruptibly("rendering", options, [&](const WorkOptions& work) {
-        RenderOptions renderOptions{work};
+        RenderOptions renderOptions;
+        static_cast<WorkOptions&>(renderOptions) = work;
         renderOptions.depth = depthOutput.has_value();
         return renderPng(scene, renderOptions);
     });

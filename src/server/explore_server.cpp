@@ -97,7 +97,9 @@ bool answerRender(ExploreServer::State& state, const std::string& slot, const Sc
                   Response& response) {
     RenderResult result;
     bool done = runInSlot(state, slot, response, [&](const WorkOptions& w) {
-        result = render(scene, RenderOptions{w});
+        RenderOptions options;
+        static_cast<WorkOptions&>(options) = w;
+        result = render(scene, options);
         return result.completed;
     });
     if (!done) return false;
