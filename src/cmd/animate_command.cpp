@@ -25,13 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// What a film's run did, for the summary.
-struct FilmStats {
-    int64_t rendered = 0, skipped = 0;
-    double seconds = 0, renderSeconds = 0;
-    int threads = 0;
-};
-
 std::optional<int64_t> parseFrameNumber(const std::string& text) {
     if (text.empty() || text.size() > 18 ||
         text.find_first_not_of("0123456789") != std::string::npos)
@@ -45,39 +38,6 @@ std::optional<int64_t> staleFrameTemporary(const std::string& name) {
     std::size_t at = name.find(middle);
     if (!name.starts_with(prefix) || at == std::string::npos) return std::nullopt;
     return parseFrameNumber(name.substr(prefix.size(), at - prefix.size()));
-}
-
-void printSummary(const AnimateCommandOptions& options, const Scene& film, int64_t count,
-                  std::pair<int64_t, int64_t> range, const FilmStats& stats) {
-    double framesPerSecond = stats.seconds > 0 ? double(stats.rendered) / stats.seconds : 0;
-    if (!options.json) {
-        std::printf(
-            "quaternia: %lld frame%s rendered, %lld skipped (frames %lld-%lld of %lld, %dx%d) "
-            "into %s in %.2f s, %.3g frames/s%s%s\n",
-            (long long)stats.rendered, stats.rendered == 1 ? "" : "s", (long long)stats.skipped,
-            (long long)range.first, (long long)range.second, (long long)count, film.render.width,
-            film.render.height, options.output.c_str(), stats.seconds, framesPerSecond,
-            options.video.empty() ? "" : ", video ", options.video.c_str());
-        return;
-    }
-    Json json;
-    json["command"] = "animate";
-    json["output"] = options.output;
-    json["video"] = options.video.empty() ? Json() : Json(options.video);
-    json["film_frames"] = count;
-    json["first_frame"] = range.first;
-    json["last_frame"] = range.second;
-    json["frames_rendered"] = stats.rendered;
-    json["frames_skipped"] = stats.skipped;
-    json["seconds"] = stats.seconds;
-    json["frames_per_second"] = framesPerSecond;
-    json["render_seconds"] = stats.renderSeconds;
-    json["fps"] = film.animation.fps;
-    json["width"] = film.render.width;
-    json["height"] = film.render.height;
-    json["samples"] = film.render.samples;
-    json["threads"] = stats.threads;
-    std::printf("%s\n", jsonText(json).c_str());
 }
 
 // One process for the whole range: the parallel-for's workers stay between frames, and the
@@ -143,7 +103,7 @@ int renderFilm(const AnimateCommandOptions& options, const Scene& film, int64_t 
     }
     if (encoder) encoder->finish();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    printSummary(options, film, count, range, stats);
+    printFilmSummary(options, film, count, range, stats);
     return 0;
 }
 
@@ -198,6 +158,41 @@ std::vector<int64_t> framesToRender(const AnimateCommandOptions& options, int64_
             !fs::exists(fs::path(options.output) / frameFileName(frame, count)))
             frames.push_back(frame);
     return frames;
+}
+
+void printFilmSummary(const AnimateCommandOptions& options, const Scene& film, int64_t count,
+                      std::pair<int64_t, int64_t> range, const FilmStats& stats,
+                      const Json& extra) {
+    double framesPerSecond = stats.seconds > 0 ? double(stats.rendered) / stats.seconds : 0;
+    if (!options.json) {
+        std::printf(
+            "quaternia: %lld frame%s rendered, %lld skipped (frames %lld-%lld of %lld, %dx%d) "
+            "into %s in %.2f s, %.3g frames/s%s%s\n",
+            (long long)stats.rendered, stats.rendered == 1 ? "" : "s", (long long)stats.skipped,
+            (long long)range.first, (long long)range.second, (long long)count, film.render.width,
+            film.render.height, options.output.c_str(), stats.seconds, framesPerSecond,
+            options.video.empty() ? "" : ", video ", options.video.c_str());
+        return;
+    }
+    Json json;
+    json["command"] = "animate";
+    json["output"] = options.output;
+    json["video"] = options.video.empty() ? Json() : Json(options.video);
+    json["film_frames"] = count;
+    json["first_frame"] = range.first;
+    json["last_frame"] = range.second;
+    json["frames_rendered"] = stats.rendered;
+    json["frames_skipped"] = stats.skipped;
+    json["seconds"] = stats.seconds;
+    json["frames_per_second"] = framesPerSecond;
+    json["render_seconds"] = stats.renderSeconds;
+    json["fps"] = film.animation.fps;
+    json["width"] = film.render.width;
+    json["height"] = film.render.height;
+    json["samples"] = film.render.samples;
+    json["threads"] = stats.threads;
+    json.update(extra);
+    std::printf("%s\n", jsonText(json).c_str());
 }
 
 std::string frameFileName(int64_t frame, int64_t count) {

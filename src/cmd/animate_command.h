@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cmd/scene_command.h"
+#include "quaternia/scene/json.h"
 
 namespace quaternia {
 
@@ -49,6 +50,19 @@ void prepareDirectory(const std::string& directory, int64_t first, int64_t last,
 // --overwrite. A file there is complete, since frames are renamed into place.
 std::vector<int64_t> framesToRender(const AnimateCommandOptions& options, int64_t count,
                                     std::pair<int64_t, int64_t> range);
+
+// What a film's run did, for the summary.
+struct FilmStats {
+    int64_t rendered = 0, skipped = 0;
+    double seconds = 0, renderSeconds = 0;
+    int threads = 0;
+};
+
+// The summary of a film's run on stdout: one line, or with --json an object, `extra`'s fields
+// added.
+void printFilmSummary(const AnimateCommandOptions& options, const Scene& film, int64_t count,
+                      std::pair<int64_t, int64_t> range, const FilmStats& stats,
+                      const Json& extra = Json::object());
 
 // "frame_000042.png": six digits, more where the film has more frames.
 std::string frameFileName(int64_t frame, int64_t count);

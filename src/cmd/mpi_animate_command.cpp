@@ -32,52 +32,6 @@ void broadcastFrames(std::vector<int64_t>& frames) {
     if (count > 0) MPI_Bcast(frames.data(), int(count), MPI_INT64_T, 0, MPI_COMM_WORLD);
 }
 
-void printSummary(const AnimateCommandOptions& options, const Scene& film, int64_t count,
-                  std::pair<int64_t, int64_t> range, int64_t rendered, double seconds,
-                  const std::vector<RankShare>& shares) {
-    const int64_t skipped = range.second - range.first + 1 - rendered;
-    if (!options.json) {
-        std::printf(
-            "quaternia: %lld frame%s rendered, %lld skipped (frames %lld-%lld of %lld, "
-            "%dx%d) into %s in %.2f s on %zu ranks%s%s\n",
-            (long long)rendered, rendered == 1 ? "" : "s", (long long)skipped,
-            (long long)range.first, (long long)range.second, (long long)count, film.render.width,
-            film.render.height, options.output.c_str(), seconds, shares.size(),
-            options.video.empty() ? "" : ", video ", options.video.c_str());
-        for (size_t rank = 0; rank < shares.size(); ++rank)
-            std::printf("  rank %zu: %lld frames, %.2f s rendering, peak %.0f MiB resident\n", rank,
-                        (long long)shares[rank].items, shares[rank].busySeconds,
-                        double(shares[rank].peakResidentKiB) / 1024);
-        return;
-    }
-    Json json;
-    json["command"] = "animate";
-    json["output"] = options.output;
-    json["video"] = options.video.empty() ? Json() : Json(options.video);
-    json["film_frames"] = count;
-    json["first_frame"] = range.first;
-    json["last_frame"] = range.second;
-    json["frames_rendered"] = rendered;
-    json["frames_skipped"] = skipped;
-    json["seconds"] = seconds;
-    json["frames_per_second"] = seconds > 0 ? double(rendered) / seconds : 0.0;
-    json["width"] = film.render.width;
-    json["height"] = film.render.height;
-    json["ranks"] = shares.size();
-    json["threads_per_rank"] = resolveThreadCount(options.threads);
-    Json ranks = Json::array();
-    for (size_t rank = 0; rank < shares.size(); ++rank) {
-        Json share;
-        share["rank"] = rank;
-        share["frames"] = shares[rank].items;
-        share["render_seconds"] = shares[rank].busySeconds;
-        share["peak_rss_kib"] = shares[rank].peakResidentKiB;
-        ranks.push_back(share);
-    }
-    json["per_rank"] = ranks;
-    std::printf("%s\n", jsonText(json).c_str());
-}
-
 }  // namespace
 
 int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
@@ -151,9 +105,19 @@ int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
                     readPng((fs::path(options.output) / frameFileName(frame, count)).string()));
             encoder.finish();
         }
-        const double seconds =
+        FilmStats stats;
+        stats.rendered = rendered;
+        stats.skipped = range.second - range.first + 1 - rendered;
+        stats.seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        printSummary(options, film, count, range, rendered, seconds, shares);
+        for (const RankShare& share : shares)
+            stats.renderSeconds += share.busySeconds;
+        stats.threads = resolveThreadCount(options.threads);
+        Json extra;
+        extra["ranks"] = shares.size();
+        extra["per_rank"] = rankSharesJson(shares, "frames");
+        printFilmSummary(options, film, count, range, stats, extra);
+        if (!options.json) printRankShares(shares, "frames");
         return 0;
     });
 }

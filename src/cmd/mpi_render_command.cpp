@@ -48,57 +48,18 @@ int64_t windowBandsFor(const PosterLayout& layout, int ranks) {
         2, (2 * int64_t(ranks) + layout.unitsAcross - 1) / layout.unitsAcross + 1);
 }
 
+// quaternia render's summary, with the ranks' shares and rank 0's window of bands.
 void printSummary(const RenderCommandOptions& options, const Scene& scene, const RenderStats& stats,
                   const std::vector<RankShare>& shares, const std::vector<int64_t>& pixels,
                   size_t windowBytes) {
-    const double raysPerSecond = stats.seconds > 0 ? double(stats.rays) / stats.seconds : 0;
-    if (!options.json) {
-        std::printf(
-            "quaternia: wrote %s (%dx%d, %d sample%s per pixel) in %.2f s, %.3g rays/s, "
-            "%zu ranks\n",
-            options.output.c_str(), scene.render.width, scene.render.height, scene.render.samples,
-            scene.render.samples == 1 ? "" : "s", stats.seconds, raysPerSecond, shares.size());
-        const double total = double(scene.render.width) * double(scene.render.height);
-        for (size_t rank = 0; rank < shares.size(); ++rank)
-            std::printf(
-                "  rank %zu: %lld units, %.1f%% of the pixels, %.2f s rendering, peak "
-                "%.0f MiB resident\n",
-                rank, (long long)shares[rank].items, 100.0 * double(pixels[rank]) / total,
-                shares[rank].busySeconds, double(shares[rank].peakResidentKiB) / 1024);
-        return;
-    }
-    Json json;
-    json["command"] = "render";
-    json["output"] = options.output;
-    json["depth_output"] = options.depthOutput.empty() ? Json() : Json(options.depthOutput);
-    json["width"] = scene.render.width;
-    json["height"] = scene.render.height;
-    json["samples"] = scene.render.samples;
-    json["formula"] = scene.fractal.formula;
-    json["c"] = scene.fractal.c;
-    json["ranks"] = shares.size();
-    json["threads_per_rank"] = resolveThreadCount(options.threads);
-    json["seconds"] = stats.seconds;
-    json["rays"] = stats.rays;
-    json["rays_per_second"] = raysPerSecond;
-    json["hits"] = stats.hits;
-    json["march_steps"] = stats.marchSteps;
-    json["iterations"] = stats.iterations;
-    json["shading_estimates"] = stats.shadingEstimates;
-    json["engine"] = stats.engine;
-    json["band_window_bytes"] = windowBytes;
-    Json ranks = Json::array();
-    for (size_t rank = 0; rank < shares.size(); ++rank) {
-        Json share;
-        share["rank"] = rank;
-        share["units"] = shares[rank].items;
-        share["pixels"] = pixels[rank];
-        share["render_seconds"] = shares[rank].busySeconds;
-        share["peak_rss_kib"] = shares[rank].peakResidentKiB;
-        ranks.push_back(share);
-    }
-    json["per_rank"] = ranks;
-    std::printf("%s\n", jsonText(json).c_str());
+    Json extra;
+    extra["ranks"] = shares.size();
+    extra["band_window_bytes"] = windowBytes;
+    extra["per_rank"] = rankSharesJson(shares, "units");
+    for (size_t rank = 0; rank < shares.size(); ++rank)
+        extra["per_rank"][rank]["pixels"] = pixels[rank];
+    printRenderSummary(options, scene, stats, extra);
+    if (!options.json) printRankShares(shares, "units");
 }
 
 }  // namespace
@@ -161,6 +122,7 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
         stats.seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         stats.engine = engine;
+        stats.threads = resolveThreadCount(options.threads);
         printSummary(options, scene, stats, shares, pixels, assembler.windowBytes());
         return 0;
     });

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <deque>
 #include <exception>
 #include <mutex>
@@ -103,6 +104,26 @@ std::vector<uint8_t> itemMessage(int64_t item) {
 }
 
 }  // namespace
+
+Json rankSharesJson(const std::vector<RankShare>& shares, const char* itemsName) {
+    Json ranks = Json::array();
+    for (size_t rank = 0; rank < shares.size(); ++rank) {
+        Json share;
+        share["rank"] = rank;
+        share[itemsName] = shares[rank].items;
+        share["render_seconds"] = shares[rank].busySeconds;
+        share["peak_rss_kib"] = shares[rank].peakResidentKiB;
+        ranks.push_back(share);
+    }
+    return ranks;
+}
+
+void printRankShares(const std::vector<RankShare>& shares, const char* itemsName) {
+    for (size_t rank = 0; rank < shares.size(); ++rank)
+        std::printf("  rank %zu: %lld %s, %.2f s rendering, peak %.0f MiB resident\n", rank,
+                    (long long)shares[rank].items, itemsName, shares[rank].busySeconds,
+                    double(shares[rank].peakResidentKiB) / 1024);
+}
 
 int64_t peakResidentKiB() {
     rusage usage{};

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cmd/mpi_channel.h"
+#include "quaternia/scene/json.h"
 
 namespace quaternia {
 
@@ -41,6 +42,11 @@ std::vector<RankShare> handOutWork(const MpiSession& mpi, const WorkItems& items
 // Every other rank: asks for items and runs them until there are no more, then reports its
 // share. False when `cancel` was set first.
 bool workOnItems(const WorkItems& items, const std::atomic<bool>* cancel);
+
+// Each rank's share as JSON objects {rank, <itemsName>, render_seconds, peak_rss_kib}, and as
+// lines on stdout ("  rank 1: 12 frames, 3.20 s rendering, peak 20 MiB resident").
+Json rankSharesJson(const std::vector<RankShare>& shares, const char* itemsName);
+void printRankShares(const std::vector<RankShare>& shares, const char* itemsName);
 
 // This process's peak resident memory (getrusage), in KiB.
 int64_t peakResidentKiB();

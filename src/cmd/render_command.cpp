@@ -10,10 +10,9 @@
 #include "quaternia/util/error.h"
 
 namespace quaternia {
-namespace {
 
-void printSummary(const RenderCommandOptions& options, const Scene& scene,
-                  const RenderStats& stats) {
+void printRenderSummary(const RenderCommandOptions& options, const Scene& scene,
+                        const RenderStats& stats, const Json& extra) {
     double raysPerSecond = stats.seconds > 0 ? stats.rays / stats.seconds : 0;
     if (!options.json) {
         std::printf(
@@ -44,10 +43,9 @@ void printSummary(const RenderCommandOptions& options, const Scene& scene,
     json["lane_utilisation"] =
         stats.laneSlots > 0 ? double(stats.laneIterations) / double(stats.laneSlots) : 0.0;
     json["engine"] = stats.engine;
+    json.update(extra);
     std::printf("%s\n", jsonText(json).c_str());
 }
-
-}  // namespace
 
 void addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
     CLI::App* render = app.add_subcommand("render", "Render a quaternion Julia set to a PNG");
@@ -82,7 +80,7 @@ int runRenderCommand(const RenderCommandOptions& options) {
         depthOutput->write(result.depthPng);
         depthOutput->commit();
     }
-    printSummary(options, scene, result.stats);
+    printRenderSummary(options, scene, result.stats);
     return 0;
 }
 

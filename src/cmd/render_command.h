@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cmd/scene_command.h"
+#include "quaternia/render/render.h"
+#include "quaternia/scene/json.h"
 
 namespace quaternia {
 
@@ -13,6 +15,10 @@ struct RenderCommandOptions : SceneCommandOptions {
     RenderCommandOptions() { output = "quaternia.png"; }
     std::string depthOutput;  // empty: no depth pass
 };
+
+// The summary of a render on stdout: one line, or with --json an object, `extra`'s fields added.
+void printRenderSummary(const RenderCommandOptions& options, const Scene& scene,
+                        const RenderStats& stats, const Json& extra = Json::object());
 
 void addRenderCommand(CLI::App& app, RenderCommandOptions& options);
 // Renders and writes the files; returns the process exit code. Throws UserError on bad input.
