@@ -85,7 +85,7 @@ int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
         int64_t rendered = 0;
         items.take = [&](int, const std::vector<uint8_t>&) { ++rendered; };
         ProgressBar bar("animating", !options.json && ProgressBar::stderrIsTerminal());
-        items.progress = [&](double fraction) { bar.update(fraction); };
+        items.progress = progressOn(bar, "frames");
         const auto start = std::chrono::steady_clock::now();
         const std::vector<RankShare> shares = handOutWork(mpi, items, interrupt.flag());
         bar.finish();

@@ -78,6 +78,10 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
     if (setUp != 0) return setUp;
 
     return runOrAbort(mpi, [&] {
+        // The work owns the outputs: whatever ends it early (an error, an interruption, the job
+        // ending because a rank died: SIGTERM) removes their temporaries before MPI_Abort.
+        std::optional<AtomicFile> colourFile = std::move(output),
+                                  depthFile = std::move(depthOutput);
         const PosterLayout layout(scene.render.width, scene.render.height);
         const PosterFormat format = PosterFormat::of(scene, !options.depthOutput.empty());
         InterruptScope interrupt;
@@ -98,7 +102,7 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
         };
         if (mpi.rank() != 0) return workOnItems(items, interrupt.flag()) ? 0 : 130;
 
-        PosterAssembler assembler(layout, format, *output, depthOutput ? &*depthOutput : nullptr,
+        PosterAssembler assembler(layout, format, *colourFile, depthFile ? &*depthFile : nullptr,
                                   windowBandsFor(layout, mpi.size()), options.threads);
         RenderStats stats;
         std::vector<int64_t> pixels(size_t(mpi.size()));
@@ -111,14 +115,14 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
             pixels[size_t(source)] += int64_t(window.x1 - window.x0) * (window.y1 - window.y0);
         };
         ProgressBar bar("rendering", !options.json && ProgressBar::stderrIsTerminal());
-        items.progress = [&](double fraction) { bar.update(fraction); };
+        items.progress = progressOn(bar, "tiles");
         const auto start = std::chrono::steady_clock::now();
         const std::vector<RankShare> shares = handOutWork(mpi, items, interrupt.flag());
         bar.finish();
         if (shares.empty()) return reportInterrupted();
         std::optional<AtomicFile> rgb = assembler.finish();
-        (rgb ? *rgb : *output).commit();
-        if (depthOutput) depthOutput->commit();
+        (rgb ? *rgb : *colourFile).commit();
+        if (depthFile) depthFile->commit();
         stats.seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         stats.engine = engine;

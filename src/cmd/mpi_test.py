@@ -100,7 +100,9 @@ def rank_pids(rank):
 
 
 def test_killed_rank_then_restart(tmp):
-    film = ["--width", "96", "--height", "54", "--set", "render.samples=9", *TURN,
+    # Frames slow enough (about 0.3 s each on one core) that the film is far from done when
+    # mpirun, a second or two after the kill, ends the job.
+    film = ["--width", "192", "--height", "108", "--set", "render.samples=100", *TURN,
             "--set", "animation.duration=6", "--threads", "1"]
     single("animate", *film, "-o", str(tmp / "whole"))
     assert len(list((tmp / "whole").iterdir())) == 18
@@ -109,18 +111,40 @@ def test_killed_rank_then_restart(tmp):
                "-o", str(killed)]
     job = subprocess.Popen(command, env=ENV, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.time() + 60
-    while time.time() < deadline and len(list(killed.glob("frame_*.png"))) < 3:
+    victims = []
+    while time.time() < deadline and not victims:
+        victims = rank_pids(1)
+    assert victims, "rank 1 not found"
+    while time.time() < deadline and not list(killed.glob("frame_*.png")):
+        time.sleep(0.002)
+    for pid in victims:
+        os.kill(pid, signal.SIGKILL)
+    assert job.wait(timeout=120) != 0, "the job went on without rank 1"
+    written = len(list(killed.glob("frame_*.png")))
+    assert 1 <= written < 18, f"{written} frames at the kill"
+    mpi(3, "animate", *film, "-o", str(killed))
+    assert not list(killed.glob("*.tmp-*")), "a temporary was left"
+    same_files(tmp / "whole", killed)
+
+
+def test_killed_rank_leaves_no_png(tmp):
+    out = tmp / "poster.png"
+    command = [MPIRUN, "-q", "--oversubscribe", "-np", "3", QUATERNIA_MPI, "render", "--width",
+               "2048", "--height", "2048", "--set", "render.samples=4", "--threads", "1",
+               "-o", str(out)]
+    job = subprocess.Popen(command, env=ENV, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.time() + 60
+    # The PNG's first pieces are in its temporary: the render is under way.
+    while time.time() < deadline and not any(
+            p.stat().st_size > 1000 for p in tmp.glob("poster.png.tmp-*")):
         time.sleep(0.005)
     victims = rank_pids(1)
     assert victims, "rank 1 not found"
     for pid in victims:
         os.kill(pid, signal.SIGKILL)
     assert job.wait(timeout=120) != 0, "the job went on without rank 1"
-    written = len(list(killed.glob("frame_*.png")))
-    assert 3 <= written < 18, f"{written} frames at the kill"
-    mpi(3, "animate", *film, "-o", str(killed))
-    assert not list(killed.glob("*.tmp-*")), "a temporary was left"
-    same_files(tmp / "whole", killed)
+    assert not out.exists(), "a PNG was written"
+    assert not list(tmp.iterdir()), f"left behind: {list(tmp.iterdir())}"
 
 
 def test_bad_scene_is_one_line_from_rank_zero(tmp):

@@ -9,6 +9,7 @@
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <thread>
 
 namespace quaternia {
@@ -125,6 +126,13 @@ void printRankShares(const std::vector<RankShare>& shares, const char* itemsName
                     double(shares[rank].peakResidentKiB) / 1024);
 }
 
+std::function<void(int64_t, int64_t)> progressOn(ProgressBar& bar, const char* itemsName) {
+    return [&bar, itemsName](int64_t done, int64_t count) {
+        bar.update(double(done) / double(std::max<int64_t>(1, count)),
+                   std::to_string(done) + "/" + std::to_string(count) + " " + itemsName);
+    };
+}
+
 int64_t peakResidentKiB() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
@@ -142,8 +150,7 @@ std::vector<RankShare> handOutWork(const MpiSession& mpi, const WorkItems& items
     auto finished = [&](int source, const std::vector<uint8_t>& result) {
         items.take(source, result);
         ++done;
-        if (items.progress)
-            items.progress(double(done) / double(std::max<int64_t>(1, items.count)));
+        if (items.progress) items.progress(done, items.count);
     };
     while (done < items.count || summaries < workers) {
         if (cancel != nullptr && cancel->load()) return {};

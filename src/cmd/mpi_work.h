@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cmd/mpi_channel.h"
+#include "cmd/progress_bar.h"
 #include "quaternia/scene/json.h"
 
 namespace quaternia {
@@ -24,8 +25,8 @@ struct WorkItems {
     std::function<bool(int64_t item)> mayStart = [](int64_t) { return true; };
     // Rank 0, main thread: a result from rank `source`, in the order they arrive.
     std::function<void(int source, const std::vector<uint8_t>& result)> take;
-    // Rank 0: called after each result with the fraction of items done.
-    std::function<void(double fraction)> progress;
+    // Rank 0: called after each result with the items done so far.
+    std::function<void(int64_t done, int64_t count)> progress;
 };
 
 // What one rank did.
@@ -47,6 +48,9 @@ bool workOnItems(const WorkItems& items, const std::atomic<bool>* cancel);
 // lines on stdout ("  rank 1: 12 frames, 3.20 s rendering, peak 20 MiB resident").
 Json rankSharesJson(const std::vector<RankShare>& shares, const char* itemsName);
 void printRankShares(const std::vector<RankShare>& shares, const char* itemsName);
+
+// A progress callback for WorkItems: the bar with "done/count <itemsName>" after the ETA.
+std::function<void(int64_t, int64_t)> progressOn(ProgressBar& bar, const char* itemsName);
 
 // This process's peak resident memory (getrusage), in KiB.
 int64_t peakResidentKiB();

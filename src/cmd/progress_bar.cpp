@@ -21,7 +21,7 @@ bool ProgressBar::stderrIsTerminal() {
     return isatty(STDERR_FILENO) == 1;
 }
 
-void ProgressBar::update(double fraction) {
+void ProgressBar::update(double fraction, const std::string& detail) {
     if (!enabled_) return;
     auto now = std::chrono::steady_clock::now();
     if (fraction < 1 && drawn_ && now - lastDraw_ < std::chrono::milliseconds(100)) return;
@@ -36,8 +36,8 @@ void ProgressBar::update(double fraction) {
     char eta[32] = "--";
     if (fraction > 0.01)
         std::snprintf(eta, sizeof eta, "%.1fs", elapsed * (1 - fraction) / fraction);
-    std::fprintf(stderr, "\r%s [%s] %5.1f%%  ETA %s   ", label_.c_str(), bar.c_str(),
-                 fraction * 100, eta);
+    std::fprintf(stderr, "\r%s [%s] %5.1f%%  ETA %s  %s   ", label_.c_str(), bar.c_str(),
+                 fraction * 100, eta, detail.c_str());
     std::fflush(stderr);
 }
 

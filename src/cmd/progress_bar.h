@@ -15,7 +15,9 @@ class ProgressBar {
     ProgressBar(const ProgressBar&) = delete;
     ProgressBar& operator=(const ProgressBar&) = delete;
 
-    void update(double fraction);  // thread-compatible: callers serialise (the parallel-for does)
+    // Thread-compatible: callers serialise (the parallel-for does). `detail` follows the ETA,
+    // e.g. "120/4096 tiles".
+    void update(double fraction, const std::string& detail = "");
     void finish();
 
     // True if standard error is a terminal.
