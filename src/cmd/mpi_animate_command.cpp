@@ -42,13 +42,17 @@ int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
     std::string ffmpeg;
     std::vector<int64_t> frames;
     const int setUp = setUpOnEveryRank(mpi, [&] {
-        if (options.printFrame)
-            throw UserError("--print-frame",
-                            "--print-frame: use `quaternia animate` to print a frame");
         film = sceneFromOptions(options);
         validateAnimation(film);
         count = filmFrameCount(film);
         range = parseFrameRange(options.frames, count);
+        if (options.printFrame) {
+            if (*options.printFrame < 1 || *options.printFrame > count)
+                throw UserError("--print-frame",
+                                "--print-frame " + std::to_string(*options.printFrame) +
+                                    ": the film has frames 1-" + std::to_string(count));
+            return;
+        }
         if (options.output.empty()) throw UserError("-o", "-o: the frame directory is empty");
         if (mpi.rank() != 0) return;
         if (!options.video.empty()) {
@@ -60,6 +64,10 @@ int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
         frames = framesToRender(options, count, range);
     });
     if (setUp != 0) return setUp;
+    if (options.printFrame) {
+        // The film was checked on every rank; rank 0 prints, as `quaternia animate` does.
+        return mpi.rank() == 0 ? runOrAbort(mpi, [&] { return runAnimateCommand(options); }) : 0;
+    }
     broadcastFrames(frames);
 
     return runOrAbort(mpi, [&] {

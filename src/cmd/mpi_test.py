@@ -79,6 +79,9 @@ def test_animate_is_byte_identical(tmp):
     assert summary["frames_rendered"] == 6 and summary["ranks"] == 3
     assert sum(r["frames"] for r in summary["per_rank"]) == 6
     assert (tmp / "film.mp4").stat().st_size > 0
+    # --print-frame prints frame 3's scene once, as quaternia does.
+    printed = mpi(3, "animate", *film, "--print-frame", "3").stdout
+    assert printed == single("animate", *film, "--print-frame", "3").stdout
     # Run again: every frame exists, none is rendered.
     again = json.loads(mpi(2, "animate", *film, "-o", str(tmp / "mpi"), "--json").stdout)
     assert again["frames_rendered"] == 0 and again["frames_skipped"] == 6
