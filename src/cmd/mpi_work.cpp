@@ -168,6 +168,7 @@ std::vector<RankShare> handOutWork(const MpiSession& mpi, const WorkItems& items
         }
         for (const std::vector<uint8_t>& result : local.takeResults()) {
             busy = true;
+            if (result.empty()) return {};  // run() was cancelled: the interruption wins
             finished(0, result);
         }
         if (local.free() && next < items.count && items.mayStart(next)) {

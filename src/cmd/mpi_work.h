@@ -18,7 +18,8 @@ namespace quaternia {
 
 struct WorkItems {
     int64_t count = 0;
-    // Does item `item` on this rank and returns its result message (rank 0's own items too).
+    // Does item `item` on this rank and returns its result message (rank 0's own items too):
+    // never empty, but where the work was cancelled.
     std::function<std::vector<uint8_t>(int64_t item)> run;
     // Rank 0: whether `item` may be handed out now (a window of bands in memory); items wait
     // in order until it may.
