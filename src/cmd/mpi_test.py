@@ -115,9 +115,9 @@ def test_killed_rank_then_restart(tmp):
     job = subprocess.Popen(command, env=ENV, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.time() + 60
     victims = []
-    while time.time() < deadline and not victims:
+    while time.time() < deadline and not victims and job.poll() is None:
         victims = rank_pids(1)
-    assert victims, "rank 1 not found"
+    assert victims, f"rank 1 not found; mpirun exited {job.poll()}"
     while time.time() < deadline and not list(killed.glob("frame_*.png")):
         time.sleep(0.002)
     for pid in victims:
@@ -138,11 +138,11 @@ def test_killed_rank_leaves_no_png(tmp):
     job = subprocess.Popen(command, env=ENV, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.time() + 60
     # The PNG's first pieces are in its temporary: the render is under way.
-    while time.time() < deadline and not any(
+    while time.time() < deadline and job.poll() is None and not any(
             p.stat().st_size > 1000 for p in tmp.glob("poster.png.tmp-*")):
         time.sleep(0.005)
     victims = rank_pids(1)
-    assert victims, "rank 1 not found"
+    assert victims, f"rank 1 not found; mpirun exited {job.poll()}"
     for pid in victims:
         os.kill(pid, signal.SIGKILL)
     assert job.wait(timeout=120) != 0, "the job went on without rank 1"
