@@ -1,6 +1,8 @@
 #include <chrono>
 #include <cstdio>
 #include <optional>
+#include <set>
+#include <string>
 
 #include "cmd/mpi_boundary.h"
 #include "cmd/mpi_commands.h"
@@ -14,9 +16,12 @@
 namespace quaternia {
 namespace {
 
-// A unit's result message: its number, its work, its samples.
+// A unit's result message: its number, its work (and the engine that did it: ranks may run on
+// machines of different SIMD targets), its samples.
 std::vector<uint8_t> unitMessage(const PosterUnit& unit) {
     MessageWriter message;
+    const std::string engine = unit.stats.engine;
+    message.putBytes(std::vector<uint8_t>(engine.begin(), engine.end()));
     const RenderStats& s = unit.stats;
     message.put(unit.unit).put(s.rays).put(s.hits).put(s.marchSteps).put(s.iterations);
     message.put(s.shadingEstimates).put(s.laneIterations).put(s.laneSlots);
@@ -24,10 +29,12 @@ std::vector<uint8_t> unitMessage(const PosterUnit& unit) {
     return message.bytes();
 }
 
-PosterUnit unitFromMessage(const std::vector<uint8_t>& bytes) {
+PosterUnit unitFromMessage(const std::vector<uint8_t>& bytes, std::string& engine) {
     MessageReader message(bytes);
     PosterUnit unit;
     RenderStats& s = unit.stats;
+    const std::vector<uint8_t> engineName = message.getBytes();
+    engine.assign(engineName.begin(), engineName.end());
     unit.unit = message.get<int64_t>();
     s.rays = message.get<int64_t>();
     s.hits = message.get<int64_t>();
@@ -86,7 +93,6 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
         const PosterFormat format = PosterFormat::of(scene, !options.depthOutput.empty());
         InterruptScope interrupt;
         RenderWorkspace workspace;  // rank 0's local thread or a worker's one loop: one user
-        const char* engine = "";
         WorkItems items;
         items.count = layout.units();
         items.run = [&](int64_t unit) {
@@ -97,7 +103,6 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
             std::optional<PosterUnit> rendered =
                 renderPosterUnit(scene, layout, format, unit, renderOptions);
             if (!rendered) return std::vector<uint8_t>();
-            engine = rendered->stats.engine;
             return unitMessage(*rendered);
         };
         if (mpi.rank() != 0) return workOnItems(items, interrupt.flag()) ? 0 : 130;
@@ -106,9 +111,12 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
                                   windowBandsFor(layout, mpi.size()), options.threads);
         RenderStats stats;
         std::vector<int64_t> pixels(size_t(mpi.size()));
+        std::set<std::string> engines;  // the SIMD targets of the ranks, e.g. {"AVX2", "AVX3"}
         items.mayStart = [&](int64_t unit) { return assembler.mayStart(unit); };
         items.take = [&](int source, const std::vector<uint8_t>& bytes) {
-            const PosterUnit unit = unitFromMessage(bytes);
+            std::string engine;
+            const PosterUnit unit = unitFromMessage(bytes, engine);
+            engines.insert(engine);
             assembler.add(unit);
             stats += unit.stats;
             const Tile window = layout.window(unit.unit);
@@ -125,7 +133,10 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
         if (depthFile) depthFile->commit();
         stats.seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        stats.engine = engine;
+        std::string engineNames;
+        for (const std::string& engine : engines)
+            engineNames += (engineNames.empty() ? "" : "+") + engine;
+        stats.engine = engineNames.c_str();
         stats.threads = resolveThreadCount(options.threads);
         printSummary(options, scene, stats, shares, pixels, assembler.windowBytes());
         return 0;
