@@ -60,6 +60,9 @@ enum class Precision { Single, Double };
 struct RenderSettings {
     int width = 0, height = 0;
     int samples = 0;  // per pixel, stratified
+    // With samples > 1: every pixel's first sample, then the rest only where the first samples
+    // of the pixel and its neighbours disagree (render/adaptive_sampling.h); false: all of them.
+    bool adaptive = true;
     MarchMethod method = MarchMethod::SphereTracing;
     double step = 0;        // fixed-step delta (Algorithm 2), world units
     double epsilon = 0;     // sphere tracing stops at epsilon * pixel footprint at distance t
