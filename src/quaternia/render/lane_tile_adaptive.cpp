@@ -31,25 +31,22 @@ void LaneTileRenderer::renderAdaptive(const Tile& tile, std::vector<PixelSamples
 
     // The first samples. Without shadow cylinders: a cylinder holds the rays of its block in
     // the batch, which for a border pixel are not those of its own tile, and a cylinder may
-    // change a pixel by a rounding (ShadowCylindersChangeNoPixel); the decision must not.
+    // change a pixel by a rounding (ShadowCylindersChangeNoPixel); the decisions must not.
+    const AdaptiveSampling order(samples_);
     const int regionWidth = region.x1 - region.x0;
-    const int first = adaptiveFirstSamples(samples_);
+    constexpr int first = AdaptiveSampling::kFirst;
     firstPass_.assign(size_t(regionWidth) * size_t(region.y1 - region.y0),
                       PixelSamples{Color(), 0, 0, first});
     stats.rays += int64_t(first) * int64_t(firstPass_.size());
     const bool cylinders = shadowCylinders_;
     shadowCylinders_ = false;
-    for (int j = 0; j < first; ++j) {
-        const int k = adaptiveSampleIndex(j, samples_);
-        rays_.clear();
-        rayPixel_.clear();
-        rayBlock_.clear();
-        for (int py = region.y0; py < region.y1; ++py) {
-            for (int px = region.x0; px < region.x1; ++px)
-                pushSampleRay(blocks, px, py, k, (py - region.y0) * regionWidth + (px - region.x0));
-        }
-        traceInto(firstPass_, stats);
+    clearRays();
+    for (int py = region.y0; py < region.y1; ++py) {
+        for (int px = region.x0; px < region.x1; ++px)
+            pushSampleRay(blocks, px, py, order.index(0, px, py),
+                          (py - region.y0) * regionWidth + (px - region.x0));
     }
+    traceInto(firstPass_, stats);
     shadowCylinders_ = cylinders;
 
     // The tile's pixels from their first samples, then the rest where they are wanted.
@@ -62,26 +59,47 @@ void LaneTileRenderer::renderAdaptive(const Tile& tile, std::vector<PixelSamples
                                    (tile.x0 - region.x0);
         std::copy(from, from + width, pixels.begin() + ptrdiff_t(py - tile.y0) * width);
     }
+    // Step 2: each later sample's colour against the first's.
+    secondReference_.resize(pixels.size());
+    deviation_.assign(pixels.size(), 0.0f);
+    for (size_t i = 0; i < pixels.size(); ++i) {
+        if (refine_[i] == kTakeSecond) secondReference_[i] = firstDisplay(pixels[i], *shader_);
+    }
+    tracking_ = true;
+    refineSamples(tile, blocks, order, first, order.second(), kTakeSecond, pixels, stats);
+    tracking_ = false;
+    for (size_t i = 0; i < pixels.size(); ++i) {
+        if (refine_[i] == kTakeSecond && secondSamplesDisagree(pixels[i], deviation_[i]))
+            refine_[i] = kTakeAll;
+    }
+    refineSamples(tile, blocks, order, first, samples_, kTakeAll, pixels, stats);
+}
+
+void LaneTileRenderer::clearRays() {
     rays_.clear();
     rayPixel_.clear();
     rayBlock_.clear();
-    for (int j = first; j < samples_; ++j) {
-        const int k = adaptiveSampleIndex(j, samples_);
+}
+
+void LaneTileRenderer::refineSamples(const Tile& tile, const Tile& blocks,
+                                     const AdaptiveSampling& order, int from, int to, uint8_t least,
+                                     std::vector<PixelSamples>& pixels, LaneTileStats& stats) {
+    const int width = tile.x1 - tile.x0;
+    clearRays();
+    for (int j = from; j < to; ++j) {
         for (int py = tile.y0; py < tile.y1; ++py) {
             for (int px = tile.x0; px < tile.x1; ++px) {
                 const int i = (py - tile.y0) * width + (px - tile.x0);
-                if (!refine_[size_t(i)]) continue;
-                pushSampleRay(blocks, px, py, k, i);
+                if (refine_[size_t(i)] < least || pixels[size_t(i)].samples > j) continue;
+                pushSampleRay(blocks, px, py, order.index(j, px, py), i);
                 ++pixels[size_t(i)].samples;
                 ++stats.rays;
             }
         }
         // Whole samples per batch: each pixel's samples are summed in the order j.
-        if (rays_.size() >= kRefinementBatch || j + 1 == samples_) {
+        if (rays_.size() >= kRefinementBatch || j + 1 == to) {
             traceInto(pixels, stats);
-            rays_.clear();
-            rayPixel_.clear();
-            rayBlock_.clear();
+            clearRays();
         }
     }
 }
@@ -111,9 +129,16 @@ void LaneTileRenderer::traceInto(std::vector<PixelSamples>& pixels, LaneTileStat
     shadeHits(stats);
     for (size_t h = 0; h < hits_.size(); ++h) {
         PixelSamples& pixel = pixels[size_t(hits_[h].pixel)];
-        pixel.sum += Color(surfaces_.red[h], surfaces_.green[h], surfaces_.blue[h]);
+        const Color sample(surfaces_.red[h], surfaces_.green[h], surfaces_.blue[h]);
+        pixel.sum += sample;
         pixel.depthSum += hits_[h].t;
         ++pixel.hits;
+        if (tracking_) {
+            float& deviation = deviation_[size_t(hits_[h].pixel)];
+            deviation = std::max(
+                deviation,
+                sampleDeviation(sample, secondReference_[size_t(hits_[h].pixel)], *shader_));
+        }
     }
 }
 

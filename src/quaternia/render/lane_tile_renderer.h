@@ -50,6 +50,12 @@ class LaneTileRenderer {
     // Sample k of pixel (px, py) into rays_, as sampleRowRays and pushRowRays make it, with
     // rayPixel_ = target; `blocks` is the tile of blockStart_. None where its cone missed.
     void pushSampleRay(const Tile& blocks, int px, int py, int k, int target);
+    // Samples j = from .. to - 1 (AdaptiveSampling::index) of the tile's pixels whose refine_
+    // is at least `least` and that have not taken them yet, into pixels.
+    void refineSamples(const Tile& tile, const Tile& blocks, const AdaptiveSampling& order,
+                       int from, int to, uint8_t least, std::vector<PixelSamples>& pixels,
+                       LaneTileStats& stats);
+    void clearRays();
     // Marches and shades rays_ and adds each hit to pixels[rayPixel_].
     void traceInto(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
 
@@ -109,6 +115,11 @@ class LaneTileRenderer {
     std::vector<PixelSamples> firstPass_;  // adaptive: the first samples of the tile's region
     std::vector<uint8_t> refine_;
     std::vector<Rgba> firstDisplay_;
+    // Step 2 of adaptive sampling: while tracking_, traceInto keeps each pixel's largest
+    // sampleDeviation from secondReference_ in deviation_.
+    bool tracking_ = false;
+    std::vector<Rgba> secondReference_;
+    std::vector<float> deviation_;
     double boundingRadius_;
     LightConstants lightConstants_;
     // The cones' radius per unit of t, for every block of the image (coneRatio()).

@@ -144,8 +144,9 @@ class FrameRenderer {
 
   private:
     Rgba finishPixel(int px, int py, const PixelSamples& pixel, const Color& background) const;
-    void addSample(int px, int py, int k, PixelSamples& pixel, RenderStats& stats,
-                   ShadingStats& shading) const;
+    // The sample's colour where it hit.
+    std::optional<Color> addSample(int px, int py, int k, PixelSamples& pixel, RenderStats& stats,
+                                   ShadingStats& shading) const;
     Rgba displayPixel(int px, int py, const PixelSamples& pixel) const;
     Rgba renderPixel(int px, int py, RenderStats& stats) const;
     void renderTileScalar(const Tile& tile, ThreadTotals& thread) const;
@@ -227,8 +228,8 @@ Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
 }
 
 // The scalar path: sample k of the pixel marched and shaded on its own, added to its sums.
-void FrameRenderer::addSample(int px, int py, int k, PixelSamples& pixel, RenderStats& stats,
-                              ShadingStats& shading) const {
+std::optional<Color> FrameRenderer::addSample(int px, int py, int k, PixelSamples& pixel,
+                                              RenderStats& stats, ShadingStats& shading) const {
     auto [sx, sy] = samplePosition(k, samples_, px, py);
     Ray ray = camera_.generateRay(px + sx, py + sy);
     MarchResult marched = march(fractal_, ray, march_);
@@ -236,10 +237,13 @@ void FrameRenderer::addSample(int px, int py, int k, PixelSamples& pixel, Render
     stats.iterations += marched.iterations;
     ++stats.rays;
     ++pixel.samples;
-    if (!marched.hit) return;
+    if (!marched.hit) return std::nullopt;
     ++pixel.hits;
-    pixel.sum += shader_.shade(*marched.hit, ray, camera_.pixelFootprint(marched.hit->t), shading);
+    const Color colour =
+        shader_.shade(*marched.hit, ray, camera_.pixelFootprint(marched.hit->t), shading);
+    pixel.sum += colour;
     pixel.depthSum += marched.hit->t;
+    return colour;
 }
 
 // A pixel's sums to its display colour and alpha.
@@ -266,30 +270,42 @@ Rgba FrameRenderer::renderPixel(int px, int py, RenderStats& stats) const {
 // The scalar path's adaptive sampling: the first samples of the tile and its border, then the
 // rest of the samples of the pixels that markPixelsToRefine picks, as the SIMD path does.
 void FrameRenderer::renderTileScalarAdaptive(const Tile& tile, ThreadTotals& thread) const {
+    const AdaptiveSampling order(samples_);
     const Tile region = refinementRegion(tile, camera_.width(), camera_.height());
     const int regionWidth = region.x1 - region.x0;
-    const int first = adaptiveFirstSamples(samples_);
+    auto at = [&](int px, int py) {
+        return size_t(py - region.y0) * size_t(regionWidth) + size_t(px - region.x0);
+    };
     ShadingStats shading;
     thread.firstPass.assign(size_t(regionWidth) * size_t(region.y1 - region.y0), PixelSamples{});
     for (int py = region.y0; py < region.y1; ++py) {
-        for (int px = region.x0; px < region.x1; ++px) {
-            PixelSamples& pixel = thread.firstPass[size_t(py - region.y0) * size_t(regionWidth) +
-                                                   size_t(px - region.x0)];
-            for (int j = 0; j < first; ++j)
-                addSample(px, py, adaptiveSampleIndex(j, samples_), pixel, thread.stats, shading);
-        }
+        for (int px = region.x0; px < region.x1; ++px)
+            addSample(px, py, order.index(0, px, py), thread.firstPass[at(px, py)], thread.stats,
+                      shading);
     }
     markPixelsToRefine(region, tile, thread.firstPass, shader_, thread.firstDisplay, thread.refine);
     const int width = tile.x1 - tile.x0;
     for (int py = tile.y0; py < tile.y1; ++py) {
         Rgba* row = rows_.row(thread, tile, py);
         for (int px = tile.x0; px < tile.x1; ++px) {
-            PixelSamples& pixel = thread.firstPass[size_t(py - region.y0) * size_t(regionWidth) +
-                                                   size_t(px - region.x0)];
-            if (thread.refine[size_t(py - tile.y0) * size_t(width) + size_t(px - tile.x0)]) {
-                for (int j = first; j < samples_; ++j)
-                    addSample(px, py, adaptiveSampleIndex(j, samples_), pixel, thread.stats,
-                              shading);
+            const PixelSamples& first = thread.firstPass[at(px, py)];
+            PixelSamples pixel = first;
+            const uint8_t refine =
+                thread.refine[size_t(py - tile.y0) * size_t(width) + size_t(px - tile.x0)];
+            const int to = refine == kTakeAll      ? samples_
+                           : refine == kTakeSecond ? order.second()
+                                                   : AdaptiveSampling::kFirst;
+            const Rgba reference = firstDisplay(first, shader_);
+            float deviation = 0;
+            for (int j = AdaptiveSampling::kFirst; j < to; ++j) {
+                const auto colour =
+                    addSample(px, py, order.index(j, px, py), pixel, thread.stats, shading);
+                if (colour && refine == kTakeSecond)
+                    deviation = std::max(deviation, sampleDeviation(*colour, reference, shader_));
+            }
+            if (refine == kTakeSecond && secondSamplesDisagree(pixel, deviation)) {
+                for (int j = to; j < samples_; ++j)
+                    addSample(px, py, order.index(j, px, py), pixel, thread.stats, shading);
             }
             thread.stats.hits += pixel.hits;
             row[px - tile.x0] = displayPixel(px, py, pixel);
