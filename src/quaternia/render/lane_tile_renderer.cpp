@@ -320,7 +320,11 @@ void LaneTileRenderer::aimShadowRays() {
 }
 
 void LaneTileRenderer::marchShadowRays(LaneTileStats& stats) {
-    if (shadowCylinders_ && shader_->shadows() == Shadows::Hard) clipShadowRays(stats);
+    if (shadowCylinders_ && shader_->shadows() == Shadows::Hard) {
+        clipShadowRays(stats);
+    } else {
+        shadowClear_.clear();  // none cleared (a batch with cylinders may have left flags)
+    }
     ShadowMarch shadowMarch;
     shadowMarch.minimumStep = shader_->shadowMinimumStep();
     shadowMarch.softness = shader_->shadowSoftness();
