@@ -63,7 +63,8 @@ void LaneTileRenderer::renderAdaptive(const Tile& tile, std::vector<PixelSamples
     secondReference_.resize(pixels.size());
     deviation_.assign(pixels.size(), 0.0f);
     for (size_t i = 0; i < pixels.size(); ++i) {
-        if (refine_[i] == kTakeSecond) secondReference_[i] = firstDisplay(pixels[i], *shader_);
+        // (Pixels of kTakeAll take these samples too, their deviations unread.)
+        if (refine_[i] != kKeepFirst) secondReference_[i] = firstDisplay(pixels[i], *shader_);
     }
     tracking_ = true;
     refineSamples(tile, blocks, order, first, order.second(), kTakeSecond, pixels, stats);

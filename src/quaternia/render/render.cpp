@@ -295,7 +295,7 @@ void FrameRenderer::renderTileScalarAdaptive(const Tile& tile, ThreadTotals& thr
             const int to = refine == kTakeAll      ? samples_
                            : refine == kTakeSecond ? order.second()
                                                    : AdaptiveSampling::kFirst;
-            const Rgba reference = firstDisplay(first, shader_);
+            const Rgba reference = refine == kTakeSecond ? firstDisplay(first, shader_) : Rgba{};
             float deviation = 0;
             for (int j = AdaptiveSampling::kFirst; j < to; ++j) {
                 const auto colour =
