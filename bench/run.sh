@@ -38,6 +38,12 @@ print("%-28s %-10s %8.1f ms %6.1f fps %8.2f Mrays/s  %-7s lanes %3.0f%%  steps/r
 one_spp=(--set render.samples=1)
 echo "scene                        size         time     rate     speed    path    lanes   counters"
 scene default-1080p --width 1920 --height 1080 "${one_spp[@]}"
+# 16 samples per pixel, every one in every pixel and adaptively (render.adaptive: the rest of
+# the samples only where a pixel's first samples and its neighbours' disagree).
+scene default-1080p-16spp-uniform --width 1920 --height 1080 --set render.samples=16 \
+  --set render.adaptive=false
+scene default-1080p-16spp-adaptive --width 1920 --height 1080 --set render.samples=16 \
+  --set render.adaptive=true
 scene default-1080p-1-thread --width 1920 --height 1080 "${one_spp[@]}" --threads 1
 scene default-1080p-double --width 1920 --height 1080 "${one_spp[@]}" --set render.precision=double
 scene default-1080p-scalar --width 1920 --height 1080 "${one_spp[@]}" --set render.engine=scalar

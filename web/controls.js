@@ -138,6 +138,12 @@ export function buildControls(container, table, state, onChange) {
       select.addEventListener('change', () => { state[name] = select.value; onChange(name); });
       control.append(select);
       updaters.push(() => { select.value = state[name]; });
+    } else if (parameter.type === 'boolean') {
+      const box = Object.assign(document.createElement('input'),
+        { type: 'checkbox', id: controlId(name), checked: state[name], title: parameter.help });
+      box.addEventListener('change', () => { state[name] = box.checked; onChange(name); });
+      control.append(box);
+      updaters.push(() => { box.checked = state[name]; });
     } else {
       const input = Object.assign(document.createElement('input'),
         { type: 'text', id: controlId(name), value: state[name], title: parameter.help });

@@ -30,25 +30,27 @@ Color albedoOf(const Shader& shader, const LaneFractal& lanes, const PointEstima
 
 LaneTileRenderer::LaneTileRenderer(const LaneFractal& lanes, const Camera& camera,
                                    const Shader& shader, const MarchSettings& march, int samples,
-                                   bool shadowCylinders)
+                                   bool shadowCylinders, bool adaptive)
     : lanes_(lanes),
       camera_(&camera),
       shader_(&shader),
       march_{march.epsilon, march.pixelAngle, march.maxSteps, march.relaxation},
       samples_(samples),
       shadowCylinders_(shadowCylinders),
+      adaptive_(adaptive),
       boundingRadius_(std::sqrt(lanes.bailoutSquared)),
       lightConstants_(shader.lightConstants()),
       coneRatio_(coneRatio(camera)) {}
 
 void LaneTileRenderer::rebind(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
-                              const MarchSettings& march, int samples) {
+                              const MarchSettings& march, int samples, bool adaptive) {
     // Everything the constructor takes from the frame; the batches are sized tile by tile.
     lanes_ = lanes;
     camera_ = &camera;
     shader_ = &shader;
     march_ = {march.epsilon, march.pixelAngle, march.maxSteps, march.relaxation};
     samples_ = samples;
+    adaptive_ = adaptive;
     boundingRadius_ = std::sqrt(lanes.bailoutSquared);
     lightConstants_ = shader.lightConstants();
     coneRatio_ = coneRatio(camera);
@@ -79,10 +81,20 @@ double LaneTileRenderer::coneRatio(const Camera& camera) {
 
 void LaneTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixels,
                               LaneTileStats& stats) {
+    if (adaptive_ && samples_ > 1) {
+        renderAdaptive(tile, pixels, stats);
+    } else {
+        renderUniform(tile, pixels, stats);
+    }
+}
+
+void LaneTileRenderer::renderUniform(const Tile& tile, std::vector<PixelSamples>& pixels,
+                                     LaneTileStats& stats) {
     const int width = tile.x1 - tile.x0;
     tileBlocks_ =
         (width + kConeBlock - 1) / kConeBlock * ((tile.y1 - tile.y0 + kConeBlock - 1) / kConeBlock);
-    pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{});
+    pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{Color(), 0, 0, samples_});
+    stats.rays += int64_t(samples_) * int64_t(pixels.size());
     marchCones(tile, stats);
     for (int k = 0; k < samples_; ++k) {
         sampleRays(tile, k);
@@ -308,7 +320,11 @@ void LaneTileRenderer::aimShadowRays() {
 }
 
 void LaneTileRenderer::marchShadowRays(LaneTileStats& stats) {
-    if (shadowCylinders_ && shader_->shadows() == Shadows::Hard) clipShadowRays(stats);
+    if (shadowCylinders_ && shader_->shadows() == Shadows::Hard) {
+        clipShadowRays(stats);
+    } else {
+        shadowClear_.clear();  // none cleared (a batch with cylinders may have left flags)
+    }
     ShadowMarch shadowMarch;
     shadowMarch.minimumStep = shader_->shadowMinimumStep();
     shadowMarch.softness = shader_->shadowSoftness();

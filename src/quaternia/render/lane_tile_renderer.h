@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "quaternia/render/adaptive_sampling.h"
 #include "quaternia/render/camera.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/march.h"
@@ -15,15 +16,9 @@
 
 namespace quaternia {
 
-// The samples of one pixel, summed.
-struct PixelSamples {
-    Color sum;
-    double depthSum = 0;
-    int hits = 0;
-};
-
 // Work of one tile, for RenderStats.
 struct LaneTileStats {
+    int64_t rays = 0;  // camera rays (samples taken, the border's of adaptive sampling among them)
     int64_t marchSteps = 0;
     LaneCounters camera, shading;
 };
@@ -32,20 +27,38 @@ struct LaneTileStats {
 class LaneTileRenderer {
   public:
     // shadowCylinders: hard shadow rays are shortened by a cylinder per block (clipShadowRays),
-    // which changes no pixel; false only to check that.
+    // which changes no pixel; false only to check that. adaptive: adaptive sampling
+    // (adaptive_sampling.h) where samples > 1.
     LaneTileRenderer(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
-                     const MarchSettings& march, int samples, bool shadowCylinders = true);
+                     const MarchSettings& march, int samples, bool shadowCylinders = true,
+                     bool adaptive = false);
 
     // The renderer of another frame, its batches kept: the same pixels as a new one would
     // make (shadowCylinders stays).
     void rebind(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
-                const MarchSettings& march, int samples);
+                const MarchSettings& march, int samples, bool adaptive = false);
 
-    // Marches and shades every sample of every pixel of the tile; pixels[(y - y0) * width +
-    // (x - x0)] receives the sums of pixel (x, y).
+    // Marches and shades the samples of every pixel of the tile (all of them, or adaptively);
+    // pixels[(y - y0) * width + (x - x0)] receives the sums of pixel (x, y).
     void render(const Tile& tile, std::vector<PixelSamples>& pixels, LaneTileStats& stats);
 
   private:
+    void renderUniform(const Tile& tile, std::vector<PixelSamples>& pixels, LaneTileStats& stats);
+    // Adaptive sampling (lane_tile_adaptive.cpp): the first samples of the tile and of its
+    // border (refinementRegion), then the rest of the pixels that markPixelsToRefine picks.
+    void renderAdaptive(const Tile& tile, std::vector<PixelSamples>& pixels, LaneTileStats& stats);
+    // Sample k of pixel (px, py) into rays_, as sampleRowRays and pushRowRays make it, with
+    // rayPixel_ = target; `blocks` is the tile of blockStart_. None where its cone missed.
+    void pushSampleRay(const Tile& blocks, int px, int py, int k, int target);
+    // Samples j = from .. to - 1 (AdaptiveSampling::index) of the tile's pixels whose refine_
+    // is at least `least` and that have not taken them yet, into pixels.
+    void refineSamples(const Tile& tile, const Tile& blocks, const AdaptiveSampling& order,
+                       int from, int to, uint8_t least, std::vector<PixelSamples>& pixels,
+                       LaneTileStats& stats);
+    void clearRays();
+    // Marches and shades rays_ and adds each hit to pixels[rayPixel_].
+    void traceInto(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
+
     // Cone marching (Amanatides 1984; as in demoscene "cone marching"): one cone per block of
     // kConeBlock^2 pixels marched to where the set may be near, so that the pixels' own rays
     // start there; blockStart_ gets that t, or infinity where the whole block misses.
@@ -98,6 +111,15 @@ class LaneTileRenderer {
     CameraMarch march_;
     int samples_;
     bool shadowCylinders_;
+    bool adaptive_;
+    std::vector<PixelSamples> firstPass_;  // adaptive: the first samples of the tile's region
+    std::vector<uint8_t> refine_;
+    std::vector<Rgba> firstDisplay_;
+    // Step 2 of adaptive sampling: while tracking_, traceInto keeps each pixel's largest
+    // sampleDeviation from secondReference_ in deviation_.
+    bool tracking_ = false;
+    std::vector<Rgba> secondReference_;
+    std::vector<float> deviation_;
     double boundingRadius_;
     LightConstants lightConstants_;
     // The cones' radius per unit of t, for every block of the image (coneRatio()).

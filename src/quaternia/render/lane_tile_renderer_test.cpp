@@ -131,7 +131,8 @@ TEST(LaneRender, ShadowCylindersChangeNoPixel) {
 
 // The tile size (imageParallelOptions: 16, 32 or 64 pixels) changes no pixel: the cone blocks
 // and shadow cylinders lie on the same 4-pixel grid in tiles of any of these sizes, and each
-// ray is marched alone whatever the lanes beside it hold.
+// ray is marched alone whatever the lanes beside it hold; adaptive sampling's decisions read
+// the first samples of a border about each tile, as its neighbour tiles have them.
 TEST(LaneRender, TileSizeChangesNoPixel) {
     Scene scene = testing::referenceScene("case01_sqr_A");
     scene.shading.shadows = Shadows::Hard;
@@ -143,37 +144,45 @@ TEST(LaneRender, TileSizeChangesNoPixel) {
                               camera.pixelFootprint(1.0), scene.render.maxSteps};
     const auto lanes = LaneFractal::from(fractal, Precision::Single);
     ASSERT_TRUE(lanes);
-    auto renderInTiles = [&](int size) {
-        LaneTileRenderer renderer(*lanes, camera, shader, march, 1, true);
-        std::vector<PixelSamples> image(size_t(width * height)), tilePixels;
-        for (int y0 = 0; y0 < height; y0 += size) {
-            for (int x0 = 0; x0 < width; x0 += size) {
-                const Tile tile{x0, y0, std::min(x0 + size, width), std::min(y0 + size, height)};
-                LaneTileStats stats;
-                renderer.render(tile, tilePixels, stats);
-                const int tileWidth = tile.x1 - tile.x0;
-                for (int y = tile.y0; y < tile.y1; ++y) {
-                    for (int x = tile.x0; x < tile.x1; ++x)
-                        image[size_t(y * width + x)] =
-                            tilePixels[size_t((y - tile.y0) * tileWidth + (x - tile.x0))];
+    // Adaptive sampling too: its decisions take the first samples of a border about the tile.
+    for (int samples : {1, 16}) {
+        auto renderInTiles = [&](int size) {
+            LaneTileRenderer renderer(*lanes, camera, shader, march, samples, true, true);
+            std::vector<PixelSamples> image(size_t(width * height)), tilePixels;
+            for (int y0 = 0; y0 < height; y0 += size) {
+                for (int x0 = 0; x0 < width; x0 += size) {
+                    const Tile tile{x0, y0, std::min(x0 + size, width),
+                                    std::min(y0 + size, height)};
+                    LaneTileStats stats;
+                    renderer.render(tile, tilePixels, stats);
+                    const int tileWidth = tile.x1 - tile.x0;
+                    for (int y = tile.y0; y < tile.y1; ++y) {
+                        for (int x = tile.x0; x < tile.x1; ++x)
+                            image[size_t(y * width + x)] =
+                                tilePixels[size_t((y - tile.y0) * tileWidth + (x - tile.x0))];
+                    }
                 }
             }
-        }
-        return image;
-    };
-    const std::vector<PixelSamples> reference = renderInTiles(32);
-    int hits = 0;
-    for (const PixelSamples& p : reference)
-        hits += p.hits;
-    EXPECT_GT(hits, 5000);
-    for (int size : {16, 64}) {
-        const std::vector<PixelSamples> image = renderInTiles(size);
-        for (size_t i = 0; i < image.size(); ++i) {
-            ASSERT_EQ(image[i].hits, reference[i].hits) << size << "-pixel tiles, pixel " << i;
-            ASSERT_EQ(image[i].sum.x, reference[i].sum.x) << size << "-pixel tiles, pixel " << i;
-            ASSERT_EQ(image[i].sum.y, reference[i].sum.y) << size << "-pixel tiles, pixel " << i;
-            ASSERT_EQ(image[i].sum.z, reference[i].sum.z) << size << "-pixel tiles, pixel " << i;
-            ASSERT_EQ(image[i].depthSum, reference[i].depthSum) << size << "-pixel tiles";
+            return image;
+        };
+        const std::vector<PixelSamples> reference = renderInTiles(32);
+        int hits = 0;
+        for (const PixelSamples& p : reference)
+            hits += p.hits;
+        EXPECT_GT(hits, 5000);
+        for (int size : {16, 64}) {
+            const std::vector<PixelSamples> image = renderInTiles(size);
+            for (size_t i = 0; i < image.size(); ++i) {
+                ASSERT_EQ(image[i].hits, reference[i].hits) << size << "-pixel tiles, pixel " << i;
+                ASSERT_EQ(image[i].sum.x, reference[i].sum.x)
+                    << size << "-pixel tiles, pixel " << i;
+                ASSERT_EQ(image[i].sum.y, reference[i].sum.y)
+                    << size << "-pixel tiles, pixel " << i;
+                ASSERT_EQ(image[i].sum.z, reference[i].sum.z)
+                    << size << "-pixel tiles, pixel " << i;
+                ASSERT_EQ(image[i].depthSum, reference[i].depthSum) << size << "-pixel tiles";
+                ASSERT_EQ(image[i].samples, reference[i].samples) << size << "-pixel tiles";
+            }
         }
     }
 }

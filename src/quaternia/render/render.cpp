@@ -11,6 +11,7 @@
 
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/image/png_lanes.h"
+#include "quaternia/render/adaptive_sampling.h"
 #include "quaternia/render/camera.h"
 #include "quaternia/render/lane_tile_renderer.h"
 #include "quaternia/render/lanes/march_lanes.h"
@@ -42,6 +43,11 @@ struct alignas(64) ThreadTotals {
     std::unique_ptr<LaneTileRenderer> laneTiles;  // the SIMD path's batches
     bool laneTilesBound = false;                  // to this call's frame
     std::vector<PixelSamples> pixels;
+    // The scalar path's adaptive sampling: the first samples of the tile's region, the
+    // decisions (adaptive_sampling.h).
+    std::vector<PixelSamples> firstPass;
+    std::vector<uint8_t> refine;
+    std::vector<Rgba> firstDisplay;
     std::vector<Rgba> row;  // a tile's row on its way to RenderResult::samples
 };
 
@@ -109,9 +115,9 @@ class RowTarget {
 };
 
 // The work of a lane tile, as render statistics (its hits are counted as its pixels finish).
-RenderStats statsOf(const LaneTileStats& tile, int64_t rays) {
+RenderStats statsOf(const LaneTileStats& tile) {
     RenderStats stats;
-    stats.rays = rays;
+    stats.rays = tile.rays;
     stats.marchSteps = tile.marchSteps;
     stats.iterations = tile.camera.laneIterations;
     stats.shadingEstimates = tile.shading.estimates;
@@ -138,8 +144,13 @@ class FrameRenderer {
 
   private:
     Rgba finishPixel(int px, int py, const PixelSamples& pixel, const Color& background) const;
+    // The sample's colour where it hit.
+    std::optional<Color> addSample(int px, int py, int k, PixelSamples& pixel, RenderStats& stats,
+                                   ShadingStats& shading) const;
+    Rgba displayPixel(int px, int py, const PixelSamples& pixel) const;
     Rgba renderPixel(int px, int py, RenderStats& stats) const;
     void renderTileScalar(const Tile& tile, ThreadTotals& thread) const;
+    void renderTileScalarAdaptive(const Tile& tile, ThreadTotals& thread) const;
     void renderTileInLanes(const Tile& tile, ThreadTotals& thread) const;
     void finishRowsOnUniformBackground(const Tile& tile, ThreadTotals& thread) const;
     void finishRowsOnBackgroundRows(const Tile& tile, ThreadTotals& thread) const;
@@ -149,8 +160,9 @@ class FrameRenderer {
     const Shader shader_;
     const MarchSettings march_;
     const int samples_;
-    const bool opaque_;  // render.alpha = "opaque"
-    const bool depth_;   // RenderOptions::depth
+    const bool adaptive_;  // adaptive sampling (adaptive_sampling.h): render.adaptive, samples > 1
+    const bool opaque_;    // render.alpha = "opaque"
+    const bool depth_;     // RenderOptions::depth
     const double depthNear_, depthRange_;
     // The SIMD path where the formula and marcher allow it (march_lanes.h).
     std::optional<LaneFractal> lanes_;
@@ -172,6 +184,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
       march_{scene.render.method,         scene.render.step,     scene.render.epsilon,
              camera_.pixelFootprint(1.0), scene.render.maxSteps, scene.render.relaxation},
       samples_(scene.render.samples),
+      adaptive_(scene.render.adaptive && scene.render.samples > 1),
       opaque_(scene.render.alpha == AlphaMode::Opaque),
       depth_(options.depth),
       depthNear_(std::max(0.0, length(scene.camera.position) - fractal_.boundingRadius())),
@@ -196,13 +209,13 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
 // The background (seen through the pixel centre) is read only where some sample missed.
 Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
                                 const Color& background) const {
-    const int hits = pixel.hits;
-    double coverage = double(hits) / samples_;
+    const int hits = pixel.hits, samples = pixel.samples;
+    double coverage = double(hits) / samples;
     Color color;
-    if (hits == samples_) {
-        color = pixel.sum / double(samples_);
+    if (hits == samples) {
+        color = pixel.sum / double(samples);
     } else if (opaque_) {
-        color = pixel.sum / double(samples_) + background * (1 - coverage);
+        color = pixel.sum / double(samples) + background * (1 - coverage);
     } else {
         color = hits > 0 ? pixel.sum / double(hits) : background;
     }
@@ -214,26 +227,28 @@ Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
     return Rgba{float(color.x), float(color.y), float(color.z), float(coverage)};
 }
 
-// The scalar path: each sample of the pixel marched and shaded on its own.
-Rgba FrameRenderer::renderPixel(int px, int py, RenderStats& stats) const {
-    PixelSamples pixel;
-    ShadingStats shading;
-    for (int k = 0; k < samples_; ++k) {
-        auto [sx, sy] = samplePosition(k, samples_, px, py);
-        Ray ray = camera_.generateRay(px + sx, py + sy);
-        MarchResult marched = march(fractal_, ray, march_);
-        stats.marchSteps += marched.steps;
-        stats.iterations += marched.iterations;
-        if (!marched.hit) continue;
-        ++pixel.hits;
-        pixel.sum +=
-            shader_.shade(*marched.hit, ray, camera_.pixelFootprint(marched.hit->t), shading);
-        pixel.depthSum += marched.hit->t;
-    }
-    stats.shadingEstimates += shading.estimates;
-    stats.rays += samples_;
-    stats.hits += pixel.hits;
-    const Color background = pixel.hits < samples_
+// The scalar path: sample k of the pixel marched and shaded on its own, added to its sums.
+std::optional<Color> FrameRenderer::addSample(int px, int py, int k, PixelSamples& pixel,
+                                              RenderStats& stats, ShadingStats& shading) const {
+    auto [sx, sy] = samplePosition(k, samples_, px, py);
+    Ray ray = camera_.generateRay(px + sx, py + sy);
+    MarchResult marched = march(fractal_, ray, march_);
+    stats.marchSteps += marched.steps;
+    stats.iterations += marched.iterations;
+    ++stats.rays;
+    ++pixel.samples;
+    if (!marched.hit) return std::nullopt;
+    ++pixel.hits;
+    const Color colour =
+        shader_.shade(*marched.hit, ray, camera_.pixelFootprint(marched.hit->t), shading);
+    pixel.sum += colour;
+    pixel.depthSum += marched.hit->t;
+    return colour;
+}
+
+// A pixel's sums to its display colour and alpha.
+Rgba FrameRenderer::displayPixel(int px, int py, const PixelSamples& pixel) const {
+    const Color background = pixel.hits < pixel.samples
                                  ? shader_.background(camera_.generateRay(px + 0.5, py + 0.5))
                                  : Color();
     Rgba linear = finishPixel(px, py, pixel, background);
@@ -241,7 +256,70 @@ Rgba FrameRenderer::renderPixel(int px, int py, RenderStats& stats) const {
     return Rgba{float(display.x), float(display.y), float(display.z), linear.a};
 }
 
+// The scalar path's uniform sampling: every sample of the pixel.
+Rgba FrameRenderer::renderPixel(int px, int py, RenderStats& stats) const {
+    PixelSamples pixel;
+    ShadingStats shading;
+    for (int k = 0; k < samples_; ++k)
+        addSample(px, py, k, pixel, stats, shading);
+    stats.shadingEstimates += shading.estimates;
+    stats.hits += pixel.hits;
+    return displayPixel(px, py, pixel);
+}
+
+// The scalar path's adaptive sampling: the first samples of the tile and its border, then the
+// rest of the samples of the pixels that markPixelsToRefine picks, as the SIMD path does.
+void FrameRenderer::renderTileScalarAdaptive(const Tile& tile, ThreadTotals& thread) const {
+    const AdaptiveSampling order(samples_);
+    const Tile region = refinementRegion(tile, camera_.width(), camera_.height());
+    const int regionWidth = region.x1 - region.x0;
+    auto at = [&](int px, int py) {
+        return size_t(py - region.y0) * size_t(regionWidth) + size_t(px - region.x0);
+    };
+    ShadingStats shading;
+    thread.firstPass.assign(size_t(regionWidth) * size_t(region.y1 - region.y0), PixelSamples{});
+    for (int py = region.y0; py < region.y1; ++py) {
+        for (int px = region.x0; px < region.x1; ++px)
+            addSample(px, py, order.index(0, px, py), thread.firstPass[at(px, py)], thread.stats,
+                      shading);
+    }
+    markPixelsToRefine(region, tile, thread.firstPass, shader_, thread.firstDisplay, thread.refine);
+    const int width = tile.x1 - tile.x0;
+    for (int py = tile.y0; py < tile.y1; ++py) {
+        Rgba* row = rows_.row(thread, tile, py);
+        for (int px = tile.x0; px < tile.x1; ++px) {
+            const PixelSamples& first = thread.firstPass[at(px, py)];
+            PixelSamples pixel = first;
+            const uint8_t refine =
+                thread.refine[size_t(py - tile.y0) * size_t(width) + size_t(px - tile.x0)];
+            const int to = refine == kTakeAll      ? samples_
+                           : refine == kTakeSecond ? order.second()
+                                                   : AdaptiveSampling::kFirst;
+            const Rgba reference = refine == kTakeSecond ? firstDisplay(first, shader_) : Rgba{};
+            float deviation = 0;
+            for (int j = AdaptiveSampling::kFirst; j < to; ++j) {
+                const auto colour =
+                    addSample(px, py, order.index(j, px, py), pixel, thread.stats, shading);
+                if (colour && refine == kTakeSecond)
+                    deviation = std::max(deviation, sampleDeviation(*colour, reference, shader_));
+            }
+            if (refine == kTakeSecond && secondSamplesDisagree(pixel, deviation)) {
+                for (int j = to; j < samples_; ++j)
+                    addSample(px, py, order.index(j, px, py), pixel, thread.stats, shading);
+            }
+            thread.stats.hits += pixel.hits;
+            row[px - tile.x0] = displayPixel(px, py, pixel);
+        }
+        rows_.done(tile, py, row);
+    }
+    thread.stats.shadingEstimates += shading.estimates;
+}
+
 void FrameRenderer::renderTileScalar(const Tile& tile, ThreadTotals& thread) const {
+    if (adaptive_) {
+        renderTileScalarAdaptive(tile, thread);
+        return;
+    }
     for (int py = tile.y0; py < tile.y1; ++py) {
         Rgba* row = rows_.row(thread, tile, py);
         for (int px = tile.x0; px < tile.x1; ++px)
@@ -254,15 +332,15 @@ void FrameRenderer::renderTileScalar(const Tile& tile, ThreadTotals& thread) con
 // the pixels finished row by row.
 void FrameRenderer::renderTileInLanes(const Tile& tile, ThreadTotals& thread) const {
     if (!thread.laneTiles) {
-        thread.laneTiles =
-            std::make_unique<LaneTileRenderer>(*lanes_, camera_, shader_, march_, samples_);
+        thread.laneTiles = std::make_unique<LaneTileRenderer>(*lanes_, camera_, shader_, march_,
+                                                              samples_, true, adaptive_);
     } else if (!thread.laneTilesBound) {
-        thread.laneTiles->rebind(*lanes_, camera_, shader_, march_, samples_);
+        thread.laneTiles->rebind(*lanes_, camera_, shader_, march_, samples_, adaptive_);
     }
     thread.laneTilesBound = true;
     LaneTileStats tileStats;
     thread.laneTiles->render(tile, thread.pixels, tileStats);
-    thread.stats += statsOf(tileStats, int64_t(samples_) * int64_t(thread.pixels.size()));
+    thread.stats += statsOf(tileStats);
     if (uniformBackground_) {
         finishRowsOnUniformBackground(tile, thread);
     } else {

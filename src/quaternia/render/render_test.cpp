@@ -7,6 +7,7 @@
 #include <cstring>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "quaternia/image/mask_compare.h"
@@ -42,12 +43,18 @@ TEST(Render, TileSizeFollowsTheImageNotTheThreads) {
 // into either result (float image, or PNG samples with the depth pass): quaternia-mpi renders
 // posters window by window.
 TEST(Render, WindowHasTheWholeImagesPixels) {
+    // Adaptive sampling decides from the first samples of each pixel's neighbours, which lie
+    // in other tiles at the window's edge.
     for (RenderEngine engine : {RenderEngine::Simd, RenderEngine::Scalar}) {
-        for (bool samples : {false, true}) {
+        for (auto [n, adaptive, samples] :
+             {std::tuple{2, false, false}, std::tuple{2, false, true}, std::tuple{16, true, false},
+              std::tuple{16, true, true}, std::tuple{16, false, false}}) {
+            if (engine == RenderEngine::Scalar && n == 16 && !adaptive) continue;  // slow
             Scene scene = defaultScene();
             scene.render.width = 150;
             scene.render.height = 139;
-            scene.render.samples = 2;
+            scene.render.samples = n;
+            scene.render.adaptive = adaptive;
             scene.render.engine = engine;
             scene.render.alpha = samples ? AlphaMode::Opaque : AlphaMode::Coverage;
             RenderOptions options;

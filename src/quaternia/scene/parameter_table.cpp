@@ -54,6 +54,18 @@ Parameter integerParameter(std::string section, std::string key, Section Scene::
     return p;
 }
 
+template <typename Section>
+Parameter booleanParameter(std::string section, std::string key, Section Scene::*part,
+                           bool Section::*field, bool defaultValue, std::string help) {
+    Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Boolean,
+                                defaultValue, 0, 0, std::move(help));
+    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
+        (scene.*part).*field = std::get<bool>(value);
+    };
+    p.read = [part, field](const Scene& scene) -> ParameterValue { return (scene.*part).*field; };
+    return p;
+}
+
 // Text whose length in bytes lies in [minimumLength, maximumLength].
 template <typename Section>
 Parameter textParameter(std::string section, std::string key, Section Scene::*part,
@@ -200,6 +212,10 @@ std::vector<Parameter> buildParameterTable() {
         integerParameter("render", "samples", &S::render, &R::samples, 4, 1, 1024,
                          "Stratified samples per pixel (anti-aliasing); 1 is one ray through "
                          "each pixel centre"),
+        booleanParameter("render", "adaptive", &S::render, &R::adaptive, false,
+                         "With several samples: one per pixel first, the others only where "
+                         "that pixel and its neighbours disagree (edges, shadows, detail); "
+                         "false takes every sample in every pixel"),
         choiceParameter(
             "render", "method", &S::render, &R::method, "sphere",
             {{"sphere", MarchMethod::SphereTracing}, {"fixed-step", MarchMethod::FixedStep}},

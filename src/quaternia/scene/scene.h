@@ -60,6 +60,10 @@ enum class Precision { Single, Double };
 struct RenderSettings {
     int width = 0, height = 0;
     int samples = 0;  // per pixel, stratified
+    // With samples > 1: every pixel's first sample, then the rest only where the first samples
+    // of the pixel and its neighbours disagree (render/adaptive_sampling.h); false: all of them.
+    // Off by default until it meets issue 17's bounds on every reference scene (README).
+    bool adaptive = false;
     MarchMethod method = MarchMethod::SphereTracing;
     double step = 0;        // fixed-step delta (Algorithm 2), world units
     double epsilon = 0;     // sphere tracing stops at epsilon * pixel footprint at distance t

@@ -1,0 +1,146 @@
+// The SIMD path's adaptive sampling (adaptive_sampling.h): LaneTileRenderer::renderAdaptive.
+#include <algorithm>
+#include <limits>
+
+#include "quaternia/render/lane_tile_renderer.h"
+#include "quaternia/render/render.h"
+
+namespace quaternia {
+
+namespace {
+
+// Rays in one batch of the rest of the samples: about a tile's pixels (as a uniform sample of
+// a 64-pixel tile holds), so that the batches stay in cache.
+constexpr size_t kRefinementBatch = 4096;
+
+}  // namespace
+
+void LaneTileRenderer::renderAdaptive(const Tile& tile, std::vector<PixelSamples>& pixels,
+                                      LaneTileStats& stats) {
+    const int imageWidth = camera_->width(), imageHeight = camera_->height();
+    const Tile region = refinementRegion(tile, imageWidth, imageHeight);
+    // The cone blocks of the region: the tile's and the ring about it, on the image's grid of
+    // kConeBlock pixels (the tile's corner is on it), so that each border pixel starts from
+    // the cone of the block it has in its own tile.
+    const Tile blocks{std::max(0, tile.x0 - kConeBlock), std::max(0, tile.y0 - kConeBlock),
+                      std::min(imageWidth, (tile.x1 + kConeBlock) / kConeBlock * kConeBlock),
+                      std::min(imageHeight, (tile.y1 + kConeBlock) / kConeBlock * kConeBlock)};
+    const int blocksAcross = (blocks.x1 - blocks.x0 + kConeBlock - 1) / kConeBlock;
+    tileBlocks_ = blocksAcross * ((blocks.y1 - blocks.y0 + kConeBlock - 1) / kConeBlock);
+    marchCones(blocks, stats);
+
+    // The first samples. Without shadow cylinders: a cylinder holds the rays of its block in
+    // the batch, which for a border pixel are not those of its own tile, and a cylinder may
+    // change a pixel by a rounding (ShadowCylindersChangeNoPixel); the decisions must not.
+    const AdaptiveSampling order(samples_);
+    const int regionWidth = region.x1 - region.x0;
+    constexpr int first = AdaptiveSampling::kFirst;
+    firstPass_.assign(size_t(regionWidth) * size_t(region.y1 - region.y0),
+                      PixelSamples{Color(), 0, 0, first});
+    stats.rays += int64_t(first) * int64_t(firstPass_.size());
+    const bool cylinders = shadowCylinders_;
+    shadowCylinders_ = false;
+    clearRays();
+    for (int py = region.y0; py < region.y1; ++py) {
+        for (int px = region.x0; px < region.x1; ++px)
+            pushSampleRay(blocks, px, py, order.index(0, px, py),
+                          (py - region.y0) * regionWidth + (px - region.x0));
+    }
+    traceInto(firstPass_, stats);
+    shadowCylinders_ = cylinders;
+
+    // The tile's pixels from their first samples, then the rest where they are wanted.
+    markPixelsToRefine(region, tile, firstPass_, *shader_, firstDisplay_, refine_);
+    const int width = tile.x1 - tile.x0;
+    pixels.resize(size_t(width) * size_t(tile.y1 - tile.y0));
+    for (int py = tile.y0; py < tile.y1; ++py) {
+        const PixelSamples* from = firstPass_.data() +
+                                   size_t(py - region.y0) * size_t(regionWidth) +
+                                   (tile.x0 - region.x0);
+        std::copy(from, from + width, pixels.begin() + ptrdiff_t(py - tile.y0) * width);
+    }
+    // Step 2: each later sample's colour against the first's.
+    secondReference_.resize(pixels.size());
+    deviation_.assign(pixels.size(), 0.0f);
+    for (size_t i = 0; i < pixels.size(); ++i) {
+        // (Pixels of kTakeAll take these samples too, their deviations unread.)
+        if (refine_[i] != kKeepFirst) secondReference_[i] = firstDisplay(pixels[i], *shader_);
+    }
+    tracking_ = true;
+    refineSamples(tile, blocks, order, first, order.second(), kTakeSecond, pixels, stats);
+    tracking_ = false;
+    for (size_t i = 0; i < pixels.size(); ++i) {
+        if (refine_[i] == kTakeSecond && secondSamplesDisagree(pixels[i], deviation_[i]))
+            refine_[i] = kTakeAll;
+    }
+    refineSamples(tile, blocks, order, first, samples_, kTakeAll, pixels, stats);
+}
+
+void LaneTileRenderer::clearRays() {
+    rays_.clear();
+    rayPixel_.clear();
+    rayBlock_.clear();
+}
+
+void LaneTileRenderer::refineSamples(const Tile& tile, const Tile& blocks,
+                                     const AdaptiveSampling& order, int from, int to, uint8_t least,
+                                     std::vector<PixelSamples>& pixels, LaneTileStats& stats) {
+    const int width = tile.x1 - tile.x0;
+    clearRays();
+    for (int j = from; j < to; ++j) {
+        for (int py = tile.y0; py < tile.y1; ++py) {
+            for (int px = tile.x0; px < tile.x1; ++px) {
+                const int i = (py - tile.y0) * width + (px - tile.x0);
+                if (refine_[size_t(i)] < least || pixels[size_t(i)].samples > j) continue;
+                pushSampleRay(blocks, px, py, order.index(j, px, py), i);
+                ++pixels[size_t(i)].samples;
+                ++stats.rays;
+            }
+        }
+        // Whole samples per batch: each pixel's samples are summed in the order j.
+        if (rays_.size() >= kRefinementBatch || j + 1 == to) {
+            traceInto(pixels, stats);
+            clearRays();
+        }
+    }
+}
+
+void LaneTileRenderer::pushSampleRay(const Tile& blocks, int px, int py, int k, int target) {
+    const int blocksAcross = (blocks.x1 - blocks.x0 + kConeBlock - 1) / kConeBlock;
+    const int block = (py - blocks.y0) / kConeBlock * blocksAcross + (px - blocks.x0) / kConeBlock;
+    const double start = blockStart_[size_t(block)];
+    if (start == std::numeric_limits<double>::infinity()) return;  // cone missed
+    auto [sx, sy] = samplePosition(k, samples_, px, py);
+    const Ray ray = camera_->generateRay(px + sx, py + sy);
+    auto interval = intersectSphere(ray, boundingRadius_);
+    const double tNear = interval ? interval->tNear : 1;
+    const double tFar = interval ? interval->tFar : -1;  // none: tNear > tFar
+    const double near = std::max(tNear, start);
+    if (!(near <= tFar)) return;
+    rays_.push(Ray{camera_->position(), ray.direction}, near, tFar);
+    rayPixel_.push_back(target);
+    rayBlock_.push_back(block);
+}
+
+void LaneTileRenderer::traceInto(std::vector<PixelSamples>& pixels, LaneTileStats& stats) {
+    if (rays_.size() == 0) return;
+    traceCameraRays(lanes_, march_, rays_, traced_, stats.camera);
+    collectHits(stats);
+    if (hits_.empty()) return;
+    shadeHits(stats);
+    for (size_t h = 0; h < hits_.size(); ++h) {
+        PixelSamples& pixel = pixels[size_t(hits_[h].pixel)];
+        const Color sample(surfaces_.red[h], surfaces_.green[h], surfaces_.blue[h]);
+        pixel.sum += sample;
+        pixel.depthSum += hits_[h].t;
+        ++pixel.hits;
+        if (tracking_) {
+            float& deviation = deviation_[size_t(hits_[h].pixel)];
+            deviation = std::max(
+                deviation,
+                sampleDeviation(sample, secondReference_[size_t(hits_[h].pixel)], *shader_));
+        }
+    }
+}
+
+}  // namespace quaternia
