@@ -431,6 +431,25 @@ ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int 
     return parallel;
 }
 
+namespace {
+
+// The parallel-for of a render: the whole image's tiles, as imageParallelOptions gives them; in a
+// window, the largest of its sizes that still gives every thread two tiles of the window (the
+// pixels are the same for any of them).
+ParallelOptions windowParallelOptions(const RenderOptions& options, const RenderSettings& settings,
+                                      const Tile& window) {
+    ParallelOptions parallel = imageParallelOptions(options, settings.width, settings.height);
+    const int width = window.x1 - window.x0, height = window.y1 - window.y0;
+    auto tiles = [&](int size) {
+        return int64_t((width + size - 1) / size) * int64_t((height + size - 1) / size);
+    };
+    while (parallel.tileSize > 16 && tiles(parallel.tileSize) < 2 * int64_t(parallel.threads))
+        parallel.tileSize /= 2;
+    return parallel;
+}
+
+}  // namespace
+
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     validateScene(scene);
     const RenderSettings& settings = scene.render;
@@ -439,7 +458,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     RenderResult result = emptyResult(settings, options, window);
     const FrameRenderer frame(scene, options, window, result);
     result.stats.engine = frame.engine();
-    const ParallelOptions parallel = imageParallelOptions(options, width, height);
+    const ParallelOptions parallel = windowParallelOptions(options, settings, window);
     RenderWorkspace local;
     std::vector<ThreadTotals>& totals =
         (options.workspace != nullptr ? *options.workspace : local).threads().totals;
