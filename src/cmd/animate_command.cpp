@@ -109,8 +109,6 @@ int renderFilm(const AnimateCommandOptions& options, const Scene& film, int64_t 
 
 }  // namespace
 
-// Every frame's scene of [first, last] is checked before any work: each is valid, its formula
-// parses, and for a video all have the first one's size.
 void checkFrames(const Scene& film, int64_t first, int64_t last, bool video) {
     std::map<std::string, bool> formulas;  // formulas checked already
     int width = 0, height = 0;
@@ -132,9 +130,6 @@ void checkFrames(const Scene& film, int64_t first, int64_t last, bool video) {
     }
 }
 
-// Creates the directory, removes the temporaries a killed run left for the frames of [first,
-// last] (only those: another run may be writing other frames into the same directory), and
-// checks that a frame can be written there.
 void prepareDirectory(const std::string& directory, int64_t first, int64_t last, int64_t count) {
     std::error_code error;
     fs::create_directories(directory, error);
@@ -148,8 +143,6 @@ void prepareDirectory(const std::string& directory, int64_t first, int64_t last,
     AtomicFile probe((fs::path(directory) / frameFileName(first, count)).string());
 }
 
-// The frames of the range that are to be rendered: those without a file, or all with
-// --overwrite. A file there is complete, since frames are renamed into place.
 std::vector<int64_t> framesToRender(const AnimateCommandOptions& options, int64_t count,
                                     std::pair<int64_t, int64_t> range) {
     std::vector<int64_t> frames;

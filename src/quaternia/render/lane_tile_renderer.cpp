@@ -98,16 +98,7 @@ void LaneTileRenderer::renderUniform(const Tile& tile, std::vector<PixelSamples>
     marchCones(tile, stats);
     for (int k = 0; k < samples_; ++k) {
         sampleRays(tile, k);
-        traceCameraRays(lanes_, march_, rays_, traced_, stats.camera);
-        collectHits(stats);
-        if (hits_.empty()) continue;
-        shadeHits(stats);
-        for (size_t h = 0; h < hits_.size(); ++h) {
-            PixelSamples& pixel = pixels[size_t(hits_[h].pixel)];
-            pixel.sum += Color(surfaces_.red[h], surfaces_.green[h], surfaces_.blue[h]);
-            pixel.depthSum += hits_[h].t;
-            ++pixel.hits;
-        }
+        traceInto(pixels, stats);
     }
 }
 
