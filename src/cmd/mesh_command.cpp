@@ -104,7 +104,9 @@ int runMeshCommand(const MeshCommandOptions& options) {
     AtomicFile output(options.output);
 
     MeshResult result = runInterruptibly("meshing", options, [&](const WorkOptions& work) {
-        return meshScene(scene, MeshOptions{work});
+        MeshOptions meshOptions{work};
+        meshOptions.memory = memoryBudgetFromOptions(options);
+        return meshScene(scene, meshOptions);
     });
     if (!result.completed) return reportInterrupted();
     MeshCheck check = checkMesh(result.mesh, options.threads);

@@ -72,6 +72,7 @@ int runPlaneCommand(const PlaneCommandOptions& options) {
     // Every check that can fail runs before the work, the output path included.
     validatePlaneScene(scene);
     const std::string note = connectednessNote(scene);
+    requireImageMemory(scene, planeMemoryBytes(scene), options, "the image");
     AtomicFile output(options.output);
 
     PlaneImage image = runInterruptibly(

@@ -149,9 +149,10 @@ std::optional<AtomicFile> PosterAssembler::finish() {
     if (!complete()) throw std::logic_error("the poster's bands are not all written");
     colourPng_.finish();
     if (depthPng_) depthPng_->finish();
-    if (!format_.alpha || !everyAlphaMaximal_) return std::nullopt;
     // encodePng stores an image whose every alpha is maximal as RGB: read the RGBA stream back
-    // row by row and write it again without alpha.
+    // row by row and write it again without alpha. A device or pipe cannot be read back: it
+    // keeps the RGBA stream (the same pixels).
+    if (!format_.alpha || !everyAlphaMaximal_ || colourFile_.isDirect()) return std::nullopt;
     AtomicFile rgb(colourFile_.path());
     PngStreamWriter rgbPng(colourFormat(layout_, format_, false), sinkInto(rgb), threads_);
     PngRowReader reader(colourFile_.temporaryPath());

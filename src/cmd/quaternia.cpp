@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
         "orbit, cycles, explore).\n\nScene "
         "keys (scene file "
         "sections, or --set section.key=value):\n" +
-        parameterHelp() + "\n" + presetHelp());
+        parameterHelp() + "\n" + presetHelp() + "\n" + costHelp());
     RenderCommandOptions renderOptions;
     addRenderCommand(app, renderOptions);
     AnimateCommandOptions animateOptions;

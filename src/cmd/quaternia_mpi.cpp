@@ -3,6 +3,7 @@
 // encodes the film), and prints; the others render. See mpi_commands.h.
 #include <CLI/CLI.hpp>
 
+#include "cmd/cli_boundary.h"
 #include "cmd/mpi_boundary.h"
 #include "cmd/mpi_commands.h"
 #include "quaternia/scene/parameters.h"
@@ -11,6 +12,7 @@
 int main(int argc, char** argv) {
     using namespace quaternia;
     MpiSession mpi(argc, argv);
+    reportFileSizeLimitAsAnError();
     CLI::App app(
         "quaternia-mpi: quaternia's render and animate spread over the ranks of an MPI job "
         "(mpirun -np N quaternia-mpi render ...). The files are byte for byte those of "

@@ -62,6 +62,8 @@ int runRenderCommand(const RenderCommandOptions& options) {
     // outputs can be written (a temporary file beside each, renamed over it at the end).
     validateScene(scene);
     Fractal::fromScene(scene);
+    requireImageMemory(scene, renderPngMemoryBytes(scene, !options.depthOutput.empty()), options,
+                       "the render");
     AtomicFile output(options.output);
     std::optional<AtomicFile> depthOutput;
     if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);

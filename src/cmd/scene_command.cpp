@@ -40,6 +40,26 @@ void addSceneOptions(CLI::App& command, SceneCommandOptions& options, const std:
     command.add_option("--threads", options.threads, "Worker threads (0 = every core)")
         ->capture_default_str();
     command.add_flag("--json", options.json, "Print a machine-readable JSON summary");
+    command
+        .add_option("--memory-budget", options.memoryBudget,
+                    "Memory the command may use: a size (512M, 8G, 1.5GiB), auto (the least of "
+                    "the address-space and data limits, the cgroup's limit and the available "
+                    "memory) or unlimited. A request estimated to need more is refused before "
+                    "any work")
+        ->capture_default_str();
+}
+
+MemoryBudget memoryBudgetFromOptions(const SceneCommandOptions& options) {
+    return parseMemoryBudget(options.memoryBudget, "--memory-budget",
+                             resolveThreadCount(options.threads));
+}
+
+void requireImageMemory(const Scene& scene, uint64_t bytes, const SceneCommandOptions& options,
+                        const std::string& what) {
+    requireMemory(bytes, memoryBudgetFromOptions(options), "render.width",
+                  "render.width x render.height = " + std::to_string(scene.render.width) + " x " +
+                      std::to_string(scene.render.height) + ": " + what,
+                  "lower render.width and render.height, or set --memory-budget");
 }
 
 Scene sceneFromOptions(const SceneCommandOptions& options) {
@@ -67,7 +87,20 @@ void setFromFlag(Scene& scene, const std::string& flag, const std::string& key,
 
 std::string sceneHelpFooter() {
     return "Scene keys (scene file sections, or --set section.key=value):\n" + parameterHelp() +
-           "\n" + presetHelp();
+           "\n" + presetHelp() + "\n" + costHelp();
+}
+
+std::string costHelp() {
+    return "Costs: memory is estimated before any work and a request that does not fit "
+           "--memory-budget is refused; time is not bounded, and some accepted inputs run for "
+           "hours or days on a desktop: a render's time grows with render.width x "
+           "render.height x render.samples and with fractal.max_iterations (at the limits, "
+           "16384 x 16384 with 1024 samples, about 3 hours on 2 cores at the default 12 "
+           "iterations, and many times that at 100000); plane images with plane.max_iterations up "
+           "to 1000000 and render.samples "
+           "likewise; a mesh's time and memory grow with mesh.resolution squared or faster "
+           "(2048: minutes and about 10 GiB); cycles with a high --period solves degree^period "
+           "equations. Ctrl-C stops any command and writes nothing.\n";
 }
 
 InterruptScope::InterruptScope() {

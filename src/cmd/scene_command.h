@@ -14,6 +14,7 @@
 #include "cmd/progress_bar.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene.h"
+#include "quaternia/util/memory_budget.h"
 #include "quaternia/util/parallel.h"
 
 namespace quaternia {
@@ -26,6 +27,7 @@ struct SceneCommandOptions {
     std::vector<std::string> overrides;    // section.key=value
     int threads = 0;
     bool json = false;
+    std::string memoryBudget = "auto";  // --memory-budget (memory_budget.h)
 };
 
 // Adds what every command that reads a scene takes: [SCENE.toml], --preset and --set.
@@ -41,13 +43,26 @@ void addSceneOptions(CLI::App& command, SceneCommandOptions& options, const std:
 // [0, 1024].
 Scene sceneFromOptions(const SceneCommandOptions& options);
 
+// The budget --memory-budget asks for (auto: what the process can still take).
+MemoryBudget memoryBudgetFromOptions(const SceneCommandOptions& options);
+
+// Throws UserError naming render.width when `bytes` (an estimate for the scene's image size) do
+// not fit in the budget of --memory-budget; `what` says what is made ("a render", "a film's
+// frames in flight").
+void requireImageMemory(const Scene& scene, uint64_t bytes, const SceneCommandOptions& options,
+                        const std::string& what);
+
 // Sets the table key `key` from the short flag `flag` (e.g. --period for cycles.period), naming
 // the flag in an error: "--period: cycles.period = 11 is out of range [1, 10]".
 void setFromFlag(Scene& scene, const std::string& flag, const std::string& key,
                  const ParameterValue& value);
 
-// The end of a scene-reading command's --help: every scene key, then every preset.
+// The end of a scene-reading command's --help: every scene key, then every preset, then the
+// costs (costHelp).
 std::string sceneHelpFooter();
+
+// What the memory budget bounds, and the accepted inputs that would run for hours.
+std::string costHelp();
 
 // While alive, Ctrl-C (SIGINT) and SIGTERM (a job's end, as mpirun sends it when a rank fails)
 // set flag() instead of ending the process (the work stops early, nothing is written and no

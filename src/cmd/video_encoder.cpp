@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -57,13 +58,23 @@ std::vector<std::string> ffmpegArguments(VideoFormat format, int width, int heig
     char rate[64];
     std::snprintf(rate, sizeof rate, "%.17g", fps);
     std::vector<std::string> args = {
-        "-hide_banner", "-loglevel",
-        "error",        "-nostats",
-        "-f",           "rawvideo",
-        "-pix_fmt",     "rgba",
-        "-video_size",  std::to_string(width) + "x" + std::to_string(height),
-        "-framerate",   rate,
-        "-i",           "pipe:0"};
+        // -xerror: an output error (a full disk, a file-size limit) that ffmpeg would only
+        // log, such as one writing the container's trailer, ends it with a failure instead.
+        "-hide_banner",
+        "-loglevel",
+        "error",
+        "-nostats",
+        "-xerror",
+        "-f",
+        "rawvideo",
+        "-pix_fmt",
+        "rgba",
+        "-video_size",
+        std::to_string(width) + "x" + std::to_string(height),
+        "-framerate",
+        rate,
+        "-i",
+        "pipe:0"};
     const std::vector<std::string> evenSize = {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2"};
     std::vector<std::string> codec;
     switch (format) {
@@ -92,11 +103,24 @@ std::vector<std::string> ffmpegArguments(VideoFormat format, int width, int heig
     return args;
 }
 
+std::string VideoEncoder::lastLogLine() const {
+    if (log_ < 0) return "";
+    std::string text;
+    char buffer[4096];
+    ssize_t n;
+    for (off_t at = 0; (n = ::pread(log_, buffer, sizeof buffer, at)) > 0; at += n)
+        text.append(buffer, size_t(n));
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' '))
+        text.pop_back();
+    const size_t start = text.find_last_of('\n');
+    return start == std::string::npos ? text : text.substr(start + 1);
+}
+
 VideoEncoder::VideoEncoder(const std::string& ffmpeg, AtomicFile output, VideoFormat format,
                            int width, int height, double fps)
     : output_(std::move(output)), width_(width), height_(height) {
     std::vector<std::string> args =
-        ffmpegArguments(format, width, height, fps, output_.temporaryPath());
+        ffmpegArguments(format, width, height, fps, output_.writePath());
     args.insert(args.begin(), ffmpeg);
     std::vector<char*> argv;
     for (std::string& arg : args)
@@ -110,6 +134,8 @@ VideoEncoder::VideoEncoder(const std::string& ffmpeg, AtomicFile output, VideoFo
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    log_ = ::memfd_create("ffmpeg-stderr", MFD_CLOEXEC);
+    if (log_ >= 0) posix_spawn_file_actions_adddup2(&actions, log_, STDERR_FILENO);
     // Its own process group: Ctrl-C at the terminal stops the film (which then stops ffmpeg),
     // not ffmpeg under it.
     posix_spawnattr_t attributes;
@@ -132,6 +158,7 @@ VideoEncoder::VideoEncoder(const std::string& ffmpeg, AtomicFile output, VideoFo
 }
 
 VideoEncoder::~VideoEncoder() {
+    if (log_ >= 0) ::close(log_);
     if (pipe_ >= 0) ::close(pipe_);
     if (pid_ > 0) {
         ::kill(pid_, SIGKILL);
@@ -155,9 +182,18 @@ void VideoEncoder::addFrame(const Image& image) {
     for (size_t done = 0; done < frame_.size();) {
         ssize_t n = ::write(pipe_, frame_.data() + done, frame_.size() - done);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0)
-            throw UserError("--video", "--video: ffmpeg stopped reading frames (" +
-                                           std::string(std::strerror(errno)) + ")");
+        if (n <= 0) {
+            const std::string reason = std::strerror(errno);
+            if (pid_ > 0) {  // gone: wait for it, so that what it said is all in the log
+                ::close(pipe_);
+                pipe_ = -1;
+                ::waitpid(pid_, nullptr, 0);
+                pid_ = -1;
+            }
+            const std::string said = lastLogLine();
+            throw UserError("--video", "--video: ffmpeg stopped reading frames (" + reason +
+                                           (said.empty() ? "" : ": " + said) + ")");
+        }
         done += size_t(n);
     }
 }
@@ -169,12 +205,14 @@ void VideoEncoder::finish() {
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
     pid_ = -1;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        const std::string said = lastLogLine();
         throw UserError("--video",
                         "--video: ffmpeg failed (" +
                             (WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
                                                : "signal " + std::to_string(WTERMSIG(status))) +
-                            "); no video written");
+                            (said.empty() ? "" : ": " + said) + "); no video written");
+    }
     output_.commit();
 }
 

@@ -49,8 +49,12 @@ class VideoEncoder {
   private:
     AtomicFile output_;
     int width_, height_;
+    // The last line ffmpeg wrote to its standard error ("" if none).
+    std::string lastLogLine() const;
+
     int pipe_ = -1;  // ffmpeg's standard input
     pid_t pid_ = -1;
+    int log_ = -1;  // ffmpeg's standard error, kept to name its failure in one line
     std::vector<uint8_t> frame_;
 };
 

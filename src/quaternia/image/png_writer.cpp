@@ -11,6 +11,11 @@ size_t pngRowBytes(const PngFormat& format) {
            size_t(format.bitDepth / 8);
 }
 
+uint64_t pngBytesBound(const PngFormat& format) {
+    const uint64_t filtered = uint64_t(format.height) * (1 + pngRowBytes(format));
+    return filtered + filtered / 1024 + 4096;
+}
+
 std::vector<uint8_t> writePngBytes(const PngFormat& format, std::span<const uint8_t> samples,
                                    int threads) {
     png_pieces::checkFormat(format);

@@ -44,6 +44,12 @@ size_t pngRowBytes(const PngFormat& format);
 std::vector<uint8_t> writePngBytes(const PngFormat& format, std::span<const uint8_t> samples,
                                    int threads = 0);
 
+// An upper bound of the size of the file writePngBytes or writePngRows makes of `format`, for
+// memory budgets: deflateRuns stores a block when coding would make it longer, so the file is
+// the filtered rows plus block and chunk headers (a few bytes per 64 KiB) and the fixed chunks
+// (signature, IHDR, IEND).
+uint64_t pngBytesBound(const PngFormat& format);
+
 // Row y's samples (pngRowBytes(format) bytes, as above): either a pointer into the caller's own
 // rows, or `scratch` (room for one row) filled and returned. Called from several threads at
 // once, and for some rows more than once, so it must be a pure function of y.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "quaternia/fractal/fractal.h"
@@ -10,6 +11,7 @@
 #include "quaternia/mesh/mesh_check.h"
 #include "quaternia/render/shade.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/util/memory_budget.h"
 #include "quaternia/util/parallel.h"
 
 namespace quaternia {
@@ -178,6 +180,85 @@ bool addNormalsAndColors(const Scene& scene, const Fractal& fractal, Mesh& mesh,
     return completed;
 }
 
+// The iso surface lies where DE = iso cells, which is up to about twice as far out as iso
+// cells (the estimate runs at 0.5 to 1 times the distance near the set); two cells more keep
+// it off the grid's outer faces, where the mesh would be clipped.
+int paddingCells(const Scene& scene) {
+    return 2 + int(std::ceil(2 * scene.mesh.iso));
+}
+
+// Contours the blocks of `grid` that the surface DE = iso cells can reach into `meshes`.
+// Returns false if cancelled.
+bool contourGrid(const Fractal& fractal, const MeshGrid& grid, double iso,
+                 const MeshOptions& options, MeshStats& stats, std::vector<BlockMesh>& meshes) {
+    const double offset = iso * grid.cellSize;
+    BlockLattice lattice;
+    for (int axis = 0; axis < 3; ++axis)
+        lattice.counts[axis] = (grid.cells[axis] + kMeshBlockSize - 1) / kMeshBlockSize;
+    stats.latticeBlocks = int64_t(lattice.counts[0]) * lattice.counts[1] * lattice.counts[2];
+    // Blocks that may hold a point with DE <= offset; one cell of slack for the corners that
+    // a block shares with its neighbours.
+    auto blocks =
+        reachableCubes(fractal, grid.origin, kMeshBlockSize * grid.cellSize, lattice.counts,
+                       offset + grid.cellSize, options.threads, options.cancel, stats.estimates);
+    if (!blocks) return false;
+    MeshField field(fractal, offset);
+    stats.nearBlocks = int64_t(blocks->size());
+    return contourBlocks(field, grid, lattice, *blocks, options, stats, meshes);
+}
+
+// Triangles of the scene's surface contoured at `resolution` over `box` (a pilot for the
+// estimate below, whose estimates MeshStats does not count); nothing if cancelled.
+std::optional<int64_t> pilotTriangles(const Scene& scene, const Fractal& fractal, const Box& box,
+                                      int resolution, const MeshOptions& options) {
+    MeshStats pilot;
+    std::vector<BlockMesh> meshes;
+    MeshOptions quiet = options;
+    quiet.progress = nullptr;
+    if (!contourGrid(fractal, gridOverBox(box, resolution, paddingCells(scene)), scene.mesh.iso,
+                     quiet, pilot, meshes))
+        return std::nullopt;
+    int64_t triangles = 0;
+    for (const BlockMesh& block : meshes)
+        triangles += int64_t(block.triangles.size());
+    return triangles;
+}
+
+// Peak bytes per triangle of a whole meshScene run (blocks, welding, normals and colours, the
+// check, the writer), measured at resolutions 128 to 512 at about 55 and rounded up; dropping
+// small components copies the mesh once more.
+constexpr double kBytesPerTriangle = 72, kBytesPerTriangleDropped = 32;
+// The surface's triangle count grows with the resolution to a power between 2 (a smooth
+// surface) and 3 (a set that fills space); where only one pilot runs, this power stands in.
+constexpr double kAssumedGrowth = 2.5;
+
+// An estimate of the memory meshScene needs at scene.mesh.resolution, from pilot meshes at
+// resolutions 64 and (for large requests, where it costs little beside the work) 128 over the
+// same box: their triangle counts give the surface's growth with the resolution, which
+// extrapolates the count. Nothing if cancelled.
+std::optional<uint64_t> meshMemoryOverBox(const Scene& scene, const Fractal& fractal,
+                                          const Box& box, const MeshOptions& options,
+                                          MeshStats& stats) {
+    const int resolution = scene.mesh.resolution;
+    const int low = std::min(resolution, 64);
+    auto lowCount = pilotTriangles(scene, fractal, box, low, options);
+    if (!lowCount) return std::nullopt;
+    double growth = kAssumedGrowth, base = double(*lowCount), from = low;
+    if (resolution > 256) {
+        auto highCount = pilotTriangles(scene, fractal, box, 128, options);
+        if (!highCount) return std::nullopt;
+        if (*lowCount > 0 && *highCount > 0)
+            growth = std::clamp(std::log2(double(*highCount) / double(*lowCount)), 2.0, 3.0);
+        base = double(*highCount);
+        from = 128;
+    }
+    const double triangles = std::max(base, 1.0) * std::pow(resolution / from, growth);
+    stats.estimatedTriangles = int64_t(std::min(triangles, 9e18));
+    const double perTriangle =
+        kBytesPerTriangle + (scene.mesh.minComponent > 0 ? kBytesPerTriangleDropped : 0);
+    return uint64_t(std::min(triangles * perTriangle, 1.8e19));
+}
+
 }  // namespace
 
 MeshResult meshScene(const Scene& scene, const MeshOptions& options) {
@@ -196,32 +277,21 @@ MeshResult meshScene(const Scene& scene, const MeshOptions& options) {
 
     auto box = boundingBoxOfSet(fractal, kBoundingBoxDivisions, stats.estimates);
     if (!box) return finish();  // nothing to mesh
-    // The iso surface lies where DE = iso cells, which is up to about twice as far out as iso
-    // cells (the estimate runs at 0.5 to 1 times the distance near the set); two cells more
-    // keep it off the grid's outer faces, where the mesh would be clipped.
-    int padding = 2 + int(std::ceil(2 * scene.mesh.iso));
-    stats.grid = gridOverBox(*box, scene.mesh.resolution, padding);
-    const MeshGrid& grid = stats.grid;
-    const double offset = scene.mesh.iso * grid.cellSize;
-
-    BlockLattice lattice;
-    for (int axis = 0; axis < 3; ++axis)
-        lattice.counts[axis] = (grid.cells[axis] + kMeshBlockSize - 1) / kMeshBlockSize;
-    stats.latticeBlocks = int64_t(lattice.counts[0]) * lattice.counts[1] * lattice.counts[2];
-    // Blocks that may hold a point with DE <= offset; one cell of slack for the corners that
-    // a block shares with its neighbours.
-    auto blocks =
-        reachableCubes(fractal, grid.origin, kMeshBlockSize * grid.cellSize, lattice.counts,
-                       offset + grid.cellSize, options.threads, options.cancel, stats.estimates);
-    if (!blocks) {
-        result.completed = false;
-        return finish();
+    if (options.memory.bytes != 0) {
+        std::optional<uint64_t> bytes = meshMemoryOverBox(scene, fractal, *box, options, stats);
+        if (!bytes) {
+            result.completed = false;
+            return finish();
+        }
+        requireMemory(*bytes, options.memory, "mesh.resolution",
+                      "mesh.resolution = " + std::to_string(scene.mesh.resolution) +
+                          " (a mesh of about " + std::to_string(stats.estimatedTriangles) +
+                          " triangles)",
+                      "lower mesh.resolution, or set --memory-budget");
     }
-
-    MeshField field(fractal, offset);
+    stats.grid = gridOverBox(*box, scene.mesh.resolution, paddingCells(scene));
     std::vector<BlockMesh> meshes;
-    stats.nearBlocks = int64_t(blocks->size());
-    if (!contourBlocks(field, grid, lattice, *blocks, options, stats, meshes)) {
+    if (!contourGrid(fractal, stats.grid, scene.mesh.iso, options, stats, meshes)) {
         result.completed = false;
         return finish();
     }

@@ -14,12 +14,16 @@
 #include "quaternia/mesh/mesh.h"
 #include "quaternia/mesh/mesh_grid.h"
 #include "quaternia/scene/scene.h"
+#include "quaternia/util/memory_budget.h"
 #include "quaternia/util/parallel.h"
 
 namespace quaternia {
 
 struct MeshOptions : WorkOptions {
     bool normalsAndColors = true;  // false: positions and triangles only (for checks)
+    // With a limit, meshScene estimates the mesh's memory before contouring (from pilot meshes
+    // at lower resolutions) and throws UserError naming mesh.resolution if it exceeds it.
+    MemoryBudget memory = {};
 };
 
 struct MeshStats {
@@ -31,6 +35,7 @@ struct MeshStats {
     int64_t closureBlocks = 0;  // of them, ruled out but crossed by the surface at a face
     int64_t estimates = 0;      // distance estimates, all stages
     int64_t droppedComponents = 0;
+    int64_t estimatedTriangles = 0;  // the memory check's estimate (0: none made)
     int threads = 0;
     double seconds = 0;
 };

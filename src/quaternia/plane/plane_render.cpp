@@ -10,6 +10,7 @@
 #include "quaternia/dynamics/basins.h"
 #include "quaternia/dynamics/mandelbrot.h"
 #include "quaternia/fractal/distance.h"
+#include "quaternia/image/png_writer.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/util/error.h"
@@ -226,6 +227,13 @@ PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
         }
     }
     return {};
+}
+
+uint64_t planeMemoryBytes(const Scene& scene) {
+    const uint64_t pixels = uint64_t(scene.render.width) * uint64_t(scene.render.height);
+    const PngFormat format{scene.render.width, scene.render.height, scene.render.bitDepth,
+                           PngColorType::Rgba};
+    return 2 * pixels * sizeof(Rgba) + 2 * pngBytesBound(format);
 }
 
 }  // namespace quaternia

@@ -39,6 +39,10 @@ ComplexRestriction complexRestrictionOfScene(const Scene& scene);
 // (slice), and a compilable formula. Throws UserError naming the key to change.
 void validatePlaneScene(const Scene& scene);
 
+// An upper bound of the memory renderPlane and encodePng of its image take beyond a small fixed
+// amount: the float image, as much again for the basins' per-pixel work, and the PNG twice.
+uint64_t planeMemoryBytes(const Scene& scene);
+
 // Validates (above), then draws the image of plane.kind.
 PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options = {});
 

@@ -27,4 +27,24 @@ PngRender renderPng(const Scene& scene, const RenderOptions& options) {
     return out;
 }
 
+uint64_t renderPngMemoryBytes(const Scene& scene, bool depth) {
+    const uint64_t pixels = uint64_t(scene.render.width) * uint64_t(scene.render.height);
+    PngFormat format{scene.render.width, scene.render.height, scene.render.bitDepth,
+                     PngColorType::Rgba};
+    uint64_t bytes;
+    if (scene.render.alpha == AlphaMode::Opaque) {
+        format.colorType = PngColorType::Rgb;
+        bytes = pngRowBytes(format) * uint64_t(format.height);  // RenderResult::samples
+    } else {
+        bytes = pixels * sizeof(Rgba);  // RenderResult::image
+    }
+    // The encoded pieces and the file they are gathered into exist together for a moment.
+    bytes += 2 * pngBytesBound(format);
+    if (depth) {
+        const PngFormat gray{scene.render.width, scene.render.height, 16, PngColorType::Gray};
+        bytes += pixels * sizeof(float) + 2 * pngBytesBound(gray);
+    }
+    return bytes;
+}
+
 }  // namespace quaternia

@@ -29,4 +29,9 @@ struct PngRender {
 // renderForPng, then encodeRenderPng (and the depth pass when options.depth).
 PngRender renderPng(const Scene& scene, const RenderOptions& options);
 
+// An upper bound of the memory renderPng(scene) takes beyond a small fixed amount: the buffers
+// that grow with the image (the float image or the PNG samples, the depth pass, the encoded
+// files while they are assembled); per-thread scratch is a tile's and not counted.
+uint64_t renderPngMemoryBytes(const Scene& scene, bool depth);
+
 }  // namespace quaternia

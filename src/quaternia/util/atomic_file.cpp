@@ -64,6 +64,12 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
     struct stat existing;
     const bool exists = ::stat(path_.c_str(), &existing) == 0;
     if (exists && S_ISDIR(existing.st_mode)) fail(EISDIR);
+    if (exists && !S_ISREG(existing.st_mode)) {
+        fd_ = ::open(path_.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+        if (fd_ < 0) fail(errno);
+        direct_ = true;
+        return;
+    }
 
     std::string name = path_ + ".tmp-XXXXXX";
     fd_ = ::mkostemp(name.data(), O_CLOEXEC);
@@ -79,7 +85,8 @@ AtomicFile::~AtomicFile() {
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept
     : path_(std::move(other.path_)),
       temporaryPath_(std::exchange(other.temporaryPath_, {})),
-      fd_(std::exchange(other.fd_, -1)) {}
+      fd_(std::exchange(other.fd_, -1)),
+      direct_(other.direct_) {}
 
 AtomicFile& AtomicFile::operator=(AtomicFile&& other) noexcept {
     if (this != &other) {
@@ -87,6 +94,7 @@ AtomicFile& AtomicFile::operator=(AtomicFile&& other) noexcept {
         path_ = std::move(other.path_);
         temporaryPath_ = std::exchange(other.temporaryPath_, {});
         fd_ = std::exchange(other.fd_, -1);
+        direct_ = other.direct_;
     }
     return *this;
 }
@@ -119,12 +127,14 @@ void AtomicFile::write(const void* data, size_t size) {
 
 void AtomicFile::commit(bool durable) {
     if (fd_ < 0) throw std::logic_error("AtomicFile::commit after commit or move");
+    // Devices and pipes cannot be synced (EINVAL); what they were given is theirs.
     if (durable && ::fsync(fd_) != 0 && errno != EINVAL) fail(errno);
     // Linux closes the descriptor even when close() fails, so it is never retried; EINTR is
     // not a failure of the data.
     int closed = ::close(fd_);
     fd_ = -1;
     if (closed != 0 && errno != EINTR) fail(errno);
+    if (direct_) return;
     if (::rename(temporaryPath_.c_str(), path_.c_str()) != 0) fail(errno);
     temporaryPath_.clear();
     if (durable) syncDirectory(directoryOf(path_));

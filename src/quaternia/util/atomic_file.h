@@ -2,6 +2,10 @@
 // and renames it over the target on commit(); until then the old file (if any) is untouched, and
 // if commit() is never reached the temporary is removed. Opening one before a long render makes
 // an unwritable output path fail at once, not after the work.
+//
+// A target that exists and is neither a regular file nor a directory (a device such as
+// /dev/stdout or /dev/null, a named pipe) cannot be replaced by a rename, and must not be: it
+// is opened and written directly, and commit() only closes it.
 #pragma once
 
 #include <cstddef>
@@ -13,8 +17,9 @@ namespace quaternia {
 
 class AtomicFile {
   public:
-    // Creates "<path>.tmp-XXXXXX" in the target's directory. Throws UserError(path, "cannot
-    // write '<path>': <reason>") when it cannot (no such directory, no permission, ...).
+    // Creates "<path>.tmp-XXXXXX" in the target's directory (or opens a device or pipe target
+    // itself). Throws UserError(path, "cannot write '<path>': <reason>") when it cannot (no
+    // such directory, no permission, ...).
     explicit AtomicFile(std::string path);
     // Removes the temporary unless committed. Never throws.
     ~AtomicFile();
@@ -36,8 +41,13 @@ class AtomicFile {
     void commit(bool durable = true);
 
     const std::string& path() const { return path_; }
-    // The temporary's name; empty once committed or moved from.
+    // The temporary's name; empty once committed or moved from, and for a device or pipe.
     const std::string& temporaryPath() const { return temporaryPath_; }
+    // Whether the target is a device or pipe written in place (it cannot be read back).
+    bool isDirect() const { return direct_; }
+    // Where the bytes go until commit(): the temporary, or the device or pipe itself (for a
+    // program given the path to write, such as ffmpeg).
+    const std::string& writePath() const { return direct_ ? path_ : temporaryPath_; }
 
   private:
     void discard() noexcept;
@@ -45,6 +55,7 @@ class AtomicFile {
 
     std::string path_, temporaryPath_;
     int fd_ = -1;
+    bool direct_ = false;  // a device or pipe, written in place
 };
 
 // Writes `bytes` to `path` through an AtomicFile. Throws UserError as AtomicFile does.
