@@ -1,6 +1,7 @@
 // The command line as a user meets it: bad input gives one line naming the problem, exit code 2
 // and no output file; good input writes a PNG and a summary.
 #include "cmd/cli_fixture.h"
+#include "cmd/cli_library_results.h"
 #include "quaternia/scene/json.h"
 
 #include <hwy/targets.h>
@@ -24,9 +25,8 @@ TEST_F(Cli, RendersDefaultSceneWithSummary) {
     EXPECT_TRUE(fs::exists(output()));
     EXPECT_NE(r.out.find("24x18"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("rays/s"), std::string::npos) << r.out;
-    std::string png = readFile(output());
-    ASSERT_GT(png.size(), 8u);
-    EXPECT_EQ(png.substr(1, 3), "PNG");
+    testing::expectPngIsLibrarys(readFile(output()),
+                                 testing::libraryRenderPng(testing::tinyScene(24, 18)));
     EXPECT_TRUE(r.err.empty()) << "no progress bar when stderr is not a terminal: " << r.err;
 }
 
@@ -41,7 +41,10 @@ TEST_F(Cli, PrintsJsonSummary) {
     EXPECT_TRUE(summary["rays_per_second"].is_number()) << r.out;
     EXPECT_TRUE(summary["seconds"].is_number()) << r.out;
     EXPECT_EQ(summary["depth_output"], (dir_ / "d.png").string()) << r.out;
-    EXPECT_TRUE(fs::exists(dir_ / "d.png"));
+    testing::expectPngIsLibrarys(readFile(dir_ / "d.png"),
+                                 testing::libraryDepthPng(testing::tinyScene(24, 18)));
+    testing::expectPngIsLibrarys(readFile(output()),
+                                 testing::libraryRenderPng(testing::tinyScene(24, 18)));
 }
 
 TEST_F(Cli, ChoosesTheLaneTargetHighwayChooses) {

@@ -1,6 +1,7 @@
 // `quaternia mesh` as a user meets it: each format written with a summary, JSON, and bad input
 // refused in one line with exit code 2 and no file left behind.
 #include "cmd/cli_fixture.h"
+#include "cmd/cli_library_results.h"
 #include "quaternia/scene/json.h"
 
 namespace quaternia {
@@ -22,8 +23,17 @@ TEST_F(MeshCli, MeshWritesEachFormatWithSummary) {
         EXPECT_TRUE(r.err.empty()) << r.err;
         ASSERT_TRUE(fs::exists(output(name))) << name;
     }
+    // Each file is the library's mesh of the scene in that format.
+    Scene scene = defaultScene();
+    setParameter(scene, "mesh.resolution", int64_t(24));
+    const Mesh mesh = meshScene(scene).mesh;
+    ASSERT_GT(mesh.triangles.size(), 1000u);
+    for (const char* name : {"out.stl", "out.ply", "out.obj"}) {
+        const std::vector<uint8_t> expected = encodeMesh(mesh, meshFormatFromPath(name));
+        EXPECT_TRUE(readFile(output(name)) == std::string(expected.begin(), expected.end()))
+            << name;
+    }
     EXPECT_EQ(readFile(output("out.ply")).substr(0, 4), "ply\n");
-    EXPECT_EQ(readFile(output("out.obj")).substr(0, 1), "#");
 }
 
 TEST_F(MeshCli, MeshPrintsJsonSummary) {

@@ -1,6 +1,8 @@
 // `quaternia plane` as a user meets it.
 #include "cmd/cli_fixture.h"
+#include "cmd/cli_library_results.h"
 #include "quaternia/scene/json.h"
+#include "quaternia/scene/scene_file.h"
 
 namespace quaternia {
 namespace {
@@ -14,7 +16,9 @@ const std::string kSmall = " --width 32 --height 24 --set render.samples=1 --thr
 TEST_F(PlaneCli, DrawsJuliaSetWithConnectednessNote) {
     CommandResult r = run("plane -o " + output() + kSmall + " --set 'fractal.c=[-1, 0, 0, 0]'");
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(readFile(output()).substr(1, 3), "PNG");
+    Scene scene = testing::tinyScene(32, 24);
+    applyOverride(scene, "fractal.c=[-1, 0, 0, 0]");
+    testing::expectPngIsLibrarys(readFile(output()), testing::libraryPlanePng(scene));
     EXPECT_NE(r.out.find("32x24"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("K is connected"), std::string::npos) << r.out;
     r = run("plane -o " + output() + kSmall + " --set 'fractal.c=[0.5, 0.5, 0, 0]'");
@@ -33,6 +37,11 @@ TEST_F(PlaneCli, MandelbrotAndSliceWithJsonSummary) {
             " --set 'plane.v=[0, 0, 1, 0]'");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(Json::parse(r.out)["kind"], "slice") << r.out;
+    Scene scene = testing::tinyScene(32, 24);
+    for (const char* assignment :
+         {"plane.kind=\"slice\"", "fractal.formula=\"i*z*j*z + c\"", "plane.v=[0, 0, 1, 0]"})
+        applyOverride(scene, assignment);
+    testing::expectPngIsLibrarys(readFile(output()), testing::libraryPlanePng(scene));
 }
 
 TEST_F(PlaneCli, HelpListsThePlaneKeys) {

@@ -2,6 +2,7 @@
 // set by hand, applied after the scene file and before --set, listed by --help, and an unknown
 // name as one line with the nearest name, exit code 2 and no output.
 #include "cmd/cli_fixture.h"
+#include "cmd/cli_library_results.h"
 
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/presets.h"
@@ -31,7 +32,13 @@ TEST_F(PresetCli, EveryPresetRenders) {
     for (const Preset& preset : scenePresets()) {
         std::string png = output(preset.name + ".png");
         ok("render --preset " + preset.name + " -o " + png + kTiny);
-        EXPECT_EQ(readFile(png).substr(1, 3), "PNG") << preset.name;
+        SCOPED_TRACE(preset.name);
+        Scene scene = defaultScene();
+        applyPreset(scene, preset.name);
+        setParameter(scene, "render.samples", int64_t(1));
+        setParameter(scene, "render.width", int64_t(24));
+        setParameter(scene, "render.height", int64_t(18));
+        testing::expectPngIsLibrarys(readFile(png), testing::libraryRenderPng(scene));
     }
 }
 
