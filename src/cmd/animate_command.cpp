@@ -107,10 +107,10 @@ int renderFilm(const AnimateCommandOptions& options, const Scene& film, int64_t 
     return 0;
 }
 
-// The largest frame of the range, three times (one rendering, one queued for the writer, one
-// being encoded, each with its PNG), and for a video that frame decoded and as ffmpeg's RGBA.
+}  // namespace
+
 void requireFilmMemory(const Scene& film, std::pair<int64_t, int64_t> range, bool video,
-                       const AnimateCommandOptions& options) {
+                       int framesInFlight, const AnimateCommandOptions& options) {
     uint64_t largest = 0;
     Scene largestScene = film;
     for (int64_t frame = range.first; frame <= range.second; ++frame) {
@@ -123,11 +123,11 @@ void requireFilmMemory(const Scene& film, std::pair<int64_t, int64_t> range, boo
     }
     const uint64_t pixels =
         uint64_t(largestScene.render.width) * uint64_t(largestScene.render.height);
-    requireImageMemory(largestScene, 3 * largest + (video ? pixels * (sizeof(Rgba) + 4) : 0),
-                       options, "the film's frames in flight");
+    requireImageMemory(
+        largestScene,
+        uint64_t(framesInFlight) * largest + (video ? pixels * (sizeof(Rgba) + 4) : 0), options,
+        "the film (frames in flight)");
 }
-
-}  // namespace
 
 void checkFrames(const Scene& film, int64_t first, int64_t last, bool video) {
     std::map<std::string, bool> formulas;  // formulas checked already
@@ -272,7 +272,8 @@ int runAnimateCommand(const AnimateCommandOptions& options) {
     }
     if (options.output.empty()) throw UserError("-o", "-o: the frame directory is empty");
     checkFrames(film, range.first, range.second, format.has_value());
-    requireFilmMemory(film, range, format.has_value(), options);
+    // One frame rendering, one queued for the writer, one being encoded.
+    requireFilmMemory(film, range, format.has_value(), 3, options);
     prepareDirectory(options.output, range.first, range.second, count);
     std::unique_ptr<VideoEncoder> encoder;
     if (format) {

@@ -29,6 +29,12 @@ struct AnimateCommandOptions : SceneCommandOptions {
 };
 
 void addAnimateCommand(CLI::App& app, AnimateCommandOptions& options);
+
+// Throws UserError naming render.width when the largest frame of `range`, `framesInFlight`
+// times over with its PNG (and for a video that frame decoded and as ffmpeg's RGBA), does not
+// fit in the budget of --memory-budget.
+void requireFilmMemory(const Scene& film, std::pair<int64_t, int64_t> range, bool video,
+                       int framesInFlight, const AnimateCommandOptions& options);
 // Renders and writes the frames (and the video); returns the process exit code. Throws
 // UserError on bad input.
 int runAnimateCommand(const AnimateCommandOptions& options);

@@ -60,6 +60,8 @@ int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
             ffmpeg = findFfmpeg();
         }
         checkFrames(film, range.first, range.second, format.has_value());
+        // Each rank renders one frame at a time (rank 0 on its local worker thread).
+        requireFilmMemory(film, range, format.has_value() && mpi.rank() == 0, 1, options);
         prepareDirectory(options.output, range.first, range.second, count);
         frames = framesToRender(options, count, range);
     });

@@ -55,6 +55,16 @@ int64_t windowBandsFor(const PosterLayout& layout, int ranks) {
         2, (2 * int64_t(ranks) + layout.unitsAcross - 1) / layout.unitsAcross + 1);
 }
 
+// Rank 0's memory beyond a fixed amount: its window of bands, once as samples and once more as
+// the PNG stream's pieces, and the units in flight (its own render's float image and depth,
+// and a unit received while it renders).
+uint64_t posterMemoryBytes(const PosterLayout& layout, const PosterFormat& format, int ranks) {
+    const uint64_t bandBytes =
+        uint64_t(layout.width) * kUnitRows * (format.colourPixelBytes() + (format.depth ? 2 : 0));
+    const uint64_t unitBytes = uint64_t(kUnitRows) * kUnitColumns * (sizeof(Rgba) + sizeof(float));
+    return 2 * uint64_t(windowBandsFor(layout, ranks)) * bandBytes + 2 * unitBytes;
+}
+
 // quaternia render's summary, with the ranks' shares and rank 0's window of bands.
 void printSummary(const RenderCommandOptions& options, const Scene& scene, const RenderStats& stats,
                   const std::vector<RankShare>& shares, const std::vector<int64_t>& pixels,
@@ -78,6 +88,11 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
         scene = sceneFromOptions(options);
         validateScene(scene);
         Fractal::fromScene(scene);
+        requireImageMemory(
+            scene,
+            posterMemoryBytes(PosterLayout(scene.render.width, scene.render.height),
+                              PosterFormat::of(scene, !options.depthOutput.empty()), mpi.size()),
+            options, "rank 0's window of bands");
         if (mpi.rank() != 0) return;
         output.emplace(options.output);
         if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);

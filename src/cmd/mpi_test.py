@@ -159,6 +159,14 @@ def test_bad_scene_is_one_line_from_rank_zero(tmp):
     assert not out.exists() and not list(tmp.iterdir())
     done = mpi(3, "render", "--no-such-option", check=False)
     assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    # A request beyond --memory-budget: refused before any work, naming the size key.
+    for command in (["render", "-o", str(out)], ["animate", "--preset", "hidden-turn", "-o", str(tmp / "frames")]):
+        done = mpi(2, *command, "--width", "16384", "--height", "16384", "--memory-budget", "4M",
+                   check=False)
+        lines = done.stderr.strip().splitlines()
+        assert done.returncode == 2 and len(lines) == 1 and "render.width" in lines[0], done.stderr
+        assert "of memory, more than the 4.00 MiB available" in lines[0], done.stderr
+        assert not list(tmp.iterdir()), list(tmp.iterdir())
 
 
 def test_rank_zero_streams_the_png(tmp):
