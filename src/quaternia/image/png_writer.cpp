@@ -6,11 +6,6 @@
 
 namespace quaternia {
 
-size_t pngRowBytes(const PngFormat& format) {
-    return size_t(format.width) * size_t(pngChannels(format.colorType)) *
-           size_t(format.bitDepth / 8);
-}
-
 std::vector<uint8_t> writePngBytes(const PngFormat& format, std::span<const uint8_t> samples,
                                    int threads) {
     png_pieces::checkFormat(format);
