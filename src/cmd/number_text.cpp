@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "quaternia/algebra/formula.h"
 #include "quaternia/util/error.h"
@@ -38,6 +39,10 @@ std::string formatReal(double value) {
     if (value == 0) value = 0;  // no "-0"
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.10g", value);
+    // Within 10 digits of the largest double the rounded text lies beyond it and would not read
+    // back (--c refuses it as out of range): all 17 digits there.
+    if (std::isinf(std::strtod(buffer, nullptr)))
+        std::snprintf(buffer, sizeof buffer, "%.17g", value);
     return buffer;
 }
 
