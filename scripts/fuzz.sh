@@ -41,7 +41,7 @@ for target in "${targets[@]}"; do
     "$corpus" "fuzz/corpus/$target" >"$log" 2>&1 || true
   elapsed=$(( $(date +%s) - start ))
   executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-  last=$(grep -E '^#[0-9]+ +(DONE|pulse|NEW|REDUCE|RELOAD)' "$log" | tail -1)
+  last=$(grep -E '^#[0-9]+[[:space:]]+(DONE|pulse|NEW|REDUCE|RELOAD)' "$log" | tail -1 || true)
   cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
   ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
   printf '%-14s %12s %7s %8s %7s %9s %8s\n' "$target" "${executions:-?}" "${cov:-?}" \
