@@ -13,6 +13,7 @@ packages=(
   openmpi-bin libopenmpi-dev
   libcpp-httplib-dev
   python3 chromium chromium-driver python3-selenium
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

@@ -58,8 +58,9 @@ class Polynomial {
     // is below 2 or m is not certified positive (K may be unbounded).
     double escapeRadius() const;
 
-    // Canonical text that parseFormula() reads back to the same polynomial (17 significant
-    // digits), e.g. "z^2 + (0.1+0.2j)*z + (-0.2+0.6i+0.2j+0.2k)".
+    // Canonical text that Formula::parse reads back to the same polynomial (17 significant
+    // digits), e.g. "z^2 + (0.1+0.2j)*z + (-0.2+0.6i+0.2j+0.2k)", where it is within the
+    // parser's 10000 characters: a formula that multiplies out to many terms writes more.
     std::string toString() const;
 
   private:

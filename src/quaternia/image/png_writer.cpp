@@ -6,11 +6,6 @@
 
 namespace quaternia {
 
-size_t pngRowBytes(const PngFormat& format) {
-    return size_t(format.width) * size_t(pngChannels(format.colorType)) *
-           size_t(format.bitDepth / 8);
-}
-
 uint64_t pngBytesBound(const PngFormat& format) {
     const uint64_t filtered = uint64_t(format.height) * (1 + pngRowBytes(format));
     return filtered + filtered / 1024 + 4096;

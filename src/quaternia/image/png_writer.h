@@ -32,7 +32,10 @@ inline int pngChannels(PngColorType type) {
 }
 
 // Bytes of one unfiltered row: width * channels * bitDepth / 8.
-size_t pngRowBytes(const PngFormat& format);
+inline size_t pngRowBytes(const PngFormat& format) {
+    return size_t(format.width) * size_t(pngChannels(format.colorType)) *
+           size_t(format.bitDepth / 8);
+}
 
 // The rows in PNG's filtering, compressed: every row Paeth-filtered, the rows cut into pieces of
 // about 256 KiB of filtered bytes, each piece deflated with runs as its only matches
