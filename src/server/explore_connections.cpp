@@ -230,8 +230,9 @@ bool GuardedHttpServer::serve(socket_t sock, const std::string& address, int por
     for (int left = limits_.requestsPerConnection; left > 0 && !stopping(); --left) {
         if (!stream.awaitRequest(seconds(limits_.idleSeconds))) break;
         stream.startRequest(Clock::now() + seconds(limits_.requestSeconds));
-        bool closed = false, bodyUnread = false;
+        bool closed = false, parsed = false, bodyUnread = false;
         ok = process_request(stream, left == 1, closed, [&](httplib::Request& request) {
+            parsed = true;  // called only for a request line and header that parse
             // A body is never read (explore_server.cpp answers 405 before it): what follows
             // the header cannot be the next request, so the connection ends with this one.
             if (request.method != "GET" && request.method != "HEAD") {
@@ -244,7 +245,8 @@ bool GuardedHttpServer::serve(socket_t sock, const std::string& address, int por
             ++timedOut_;
             break;
         }
-        if (!ok || closed || bodyUnread || stream.overBudget()) break;
+        // After a request that did not parse, what follows is no request either.
+        if (!ok || closed || !parsed || bodyUnread || stream.overBudget()) break;
     }
     return ok;
 }
