@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -30,6 +31,23 @@ void addExploreOptions(CLI::App& command, ExploreCommandOptions& options) {
     command.add_option("--threads", options.threads, "Worker threads per render (0 = every core)")
         ->capture_default_str()
         ->check(CLI::Range(0, 1024));
+    ExploreConnectionLimits& limits = options.connections;
+    command
+        .add_option("--connections", limits.total,
+                    "Connections served at once in all; more are refused (HTTP 503)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 4096));
+    command
+        .add_option("--connections-per-address", limits.perAddress,
+                    "Connections served at once from one address; more are refused (HTTP 503)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 4096));
+    command
+        .add_option("--request-timeout", limits.requestSeconds,
+                    "Seconds a client has to send a request, from its first byte; a slower one "
+                    "is disconnected")
+        ->capture_default_str()
+        ->check(CLI::Range(0.1, 600.0));
 }
 
 void addExploreCommand(CLI::App& app, ExploreCommandOptions& options) {
@@ -46,6 +64,12 @@ int runExploreCommand(const ExploreCommandOptions& options) {
     std::vector<std::string> arguments = {
         server,       "--port",    std::to_string(options.port),   "--bind",
         options.bind, "--threads", std::to_string(options.threads)};
+    const ExploreConnectionLimits& limits = options.connections;
+    char seconds[32];  // every digit, so that the server gets the very number
+    std::snprintf(seconds, sizeof seconds, "%.17g", limits.requestSeconds);
+    arguments.insert(arguments.end(),
+                     {"--connections", std::to_string(limits.total), "--connections-per-address",
+                      std::to_string(limits.perAddress), "--request-timeout", seconds});
     if (!options.preset.empty()) arguments.insert(arguments.end(), {"--preset", options.preset});
     // After "--", a scene path that starts with '-' is still a path.
     if (!options.scenePath.empty()) arguments.insert(arguments.end(), {"--", options.scenePath});

@@ -11,6 +11,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "server/explore_server.h"
+
 namespace quaternia {
 
 struct ExploreCommandOptions {
@@ -19,6 +21,7 @@ struct ExploreCommandOptions {
     std::string bind = "127.0.0.1";
     int port = 8080;
     int threads = 0;
+    ExploreConnectionLimits connections;  // --connections, --connections-per-address, ...
 };
 
 // The options of the command, declared on `command` (quaternia's explore subcommand, or

@@ -34,6 +34,7 @@ int serveExplorer(const ExploreCommandOptions& options) {
     serverOptions.bind = options.bind;
     serverOptions.port = options.port;
     serverOptions.renderThreads = options.threads;
+    serverOptions.connections = options.connections;
     serverOptions.startScene =
         options.scenePath.empty() ? defaultScene() : loadScene(options.scenePath);
     if (!options.preset.empty()) applyPreset(serverOptions.startScene, options.preset);

@@ -1,5 +1,7 @@
 #include "server/explore_request.h"
 
+#include <set>
+#include <string_view>
 #include <variant>
 
 #include "quaternia/fractal/fractal.h"
@@ -63,6 +65,11 @@ Scene sceneFromQuery(const Scene& base, const QueryParameters& query, const Expl
         throw UserError("query", "too many query parameters (" + std::to_string(query.size()) +
                                      "; at most " + std::to_string(limits.maxParameters) + ")");
     }
+    // Which of two values would win is not the client's to guess: a repeated key is refused.
+    std::set<std::string_view> names;
+    for (const auto& entry : query)
+        if (!names.insert(entry.first).second)
+            throw UserError(entry.first, entry.first + " is given more than once");
     Scene scene = base;
     for (const auto& [name, value] : query) {
         if (name == kClientParameter) continue;

@@ -37,9 +37,9 @@ inline constexpr const char* kClientParameter = "client";
 
 // `base` (the default scene, or the scene file the server started with) with every query
 // parameter applied as `--set name=value` (TOML value syntax; a bare word is a string), then
-// validated. Throws UserError naming the key for an
-// unknown key, a bad value or a cross-field problem; "client" is skipped. animation.keys (the
-// inline TOML array of --set) is read, at most limits.maxAnimationKeys of them.
+// validated. Throws UserError naming the key for an unknown key, a repeated one, a bad value or
+// a cross-field problem; "client" is skipped. animation.keys (the inline TOML array of --set) is
+// read, at most limits.maxAnimationKeys of them.
 Scene sceneFromQuery(const Scene& base, const QueryParameters& query, const ExploreLimits& limits);
 
 // validateScene, then the explorer's bounds on iterations and steps, then the formula; each

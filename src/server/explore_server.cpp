@@ -15,6 +15,7 @@
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_file.h"
 #include "quaternia/util/error.h"
+#include "server/explore_connections.h"
 #include "server/explore_film.h"
 #include "server/explore_sessions.h"
 #include "server/explore_static.h"
@@ -23,7 +24,7 @@ namespace quaternia {
 
 struct ExploreServer::State {
     ExploreServerOptions options;
-    httplib::Server http;
+    GuardedHttpServer http;
     RenderSlots slots;
     RenderGate gate;
     RateLimiter rateLimiter;
@@ -32,6 +33,7 @@ struct ExploreServer::State {
 
     explicit State(ExploreServerOptions o)
         : options(std::move(o)),
+          http(options.connections),
           gate(options.concurrentRenders),
           rateLimiter(options.requestsPerSecond, options.requestBurst) {}
 };
@@ -243,14 +245,19 @@ void addRoutes(ExploreServer::State& state) {
 
 void configure(ExploreServer::State& state) {
     httplib::Server& http = state.http;
-    int threads = state.options.connectionThreads;
-    http.new_task_queue = [threads] { return new httplib::ThreadPool(std::size_t(threads)); };
+    // Per read and write; a whole request has its deadline besides (explore_connections.h),
+    // and keep-alive its own wait.
     http.set_read_timeout(5, 0);
     http.set_write_timeout(10, 0);
-    http.set_keep_alive_timeout(2);
-    http.set_keep_alive_max_count(100);
     http.set_payload_max_length(64 * 1024);  // every route is a GET; bodies are never read
     http.set_pre_routing_handler([&state](const Request& request, Response& response) {
+        // Before any body is read: HEAD is answered as GET without the body.
+        if (request.method != "GET" && request.method != "HEAD") {
+            answerError(response, 405, "method",
+                        "method " + request.method + " is not allowed; the explorer answers GET");
+            response.set_header("Allow", "GET, HEAD");
+            return httplib::Server::HandlerResponse::Handled;
+        }
         if (state.rateLimiter.allow(request.remote_addr))
             return httplib::Server::HandlerResponse::Unhandled;
         answerError(response, 429, "", "too many requests; slow down");
@@ -286,6 +293,7 @@ int ExploreServer::bind() {
     const auto& o = state_->options;
     int port = o.port == 0 ? state_->http.bind_to_any_port(o.bind)
                            : (state_->http.bind_to_port(o.bind, o.port) ? o.port : -1);
+    if (port >= 0) state_->http.widenBacklog();
     if (port < 0) {
         throw UserError("--bind", "cannot listen on " + o.bind + " port " + std::to_string(o.port) +
                                       " (in use, or not an address of this machine)");
@@ -295,6 +303,10 @@ int ExploreServer::bind() {
 
 int ExploreServer::port() const {
     return state_->port;
+}
+
+ExploreConnectionStats ExploreServer::connectionStats() const {
+    return state_->http.stats();
 }
 
 void ExploreServer::run() {

@@ -17,10 +17,8 @@ def main():
     parser.add_argument("--binary", default="build/quaternia")
     parser.add_argument("--runs", type=int, default=5)
     arguments = parser.parse_args()
-    server = Server(arguments.binary)
-    browser = Browser(980, 400)
-    driver = browser.driver
-    try:
+    with Server(arguments.binary) as server, Browser(980, 400) as browser:
+        driver = browser.driver
         first_frame, first_frame_script, first_render, fps = [], [], [], []
         for _ in range(arguments.runs):
             driver.get(server.url + "?size=640x360")
@@ -56,9 +54,6 @@ def main():
             "first_frame_server_render_ms": statistics.median(first_render),
             "drag_frames_per_second": statistics.median(fps),
         }))
-    finally:
-        browser.close()
-        server.stop()
 
 
 if __name__ == "__main__":

@@ -17,7 +17,8 @@ from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
-from harness import Browser, Server, shown_image, wait_for_final, wait_until
+from harness import (Browser, BrowserUnavailable, Server, shown_image, wait_for_final,
+                     wait_until)
 
 
 def step(text):
@@ -106,103 +107,110 @@ def timeline(driver, binary, work):
     step("dragging refused a drop on a key, moved a key to 2 s; Delete removed it")
 
 
+def explore(server, browser, arguments, work):
+    """The page in the browser: every check of the test."""
+    driver = browser.driver
+    # A small final size keeps the test quick; screenshots fit the window.
+    driver.get(server.url + ("" if arguments.screenshot else "?size=240x160"))
+    wait_for_final(driver)
+    first = shown_image(driver)
+    step("page loaded, final image %d bytes" % len(first))
+
+    if arguments.screenshot:
+        wait_until(driver, "return document.body.dataset.map === 'ready';")
+        driver.save_screenshot(arguments.screenshot)
+        step("wrote " + arguments.screenshot)
+    else:
+        # Drag the slider of c's i component with the mouse: from its middle to 62% of its
+        # width, in 8 moves (offsets are from the element's centre).
+        slider = driver.find_element(By.ID, "ctl-fractal_c-1")
+        box = scroll_into_view(driver, slider)
+        before = driver.execute_script("return document.body.dataset.c;")
+        actions = ActionChains(driver).move_to_element(slider).click_and_hold()
+        for k in range(1, 9):
+            actions.move_to_element_with_offset(slider, int(box["width"] * 0.12 * k / 8), 0)
+        actions.release().perform()
+        wait_until(driver, "return document.body.dataset.c !== arguments[0];", 60, before)
+        wait_for_final(driver)
+        dragged = shown_image(driver)
+        check(dragged != first, "dragging the slider changes the image")
+        step("slider drag changed the image")
+
+        # Click the Mandelbrot map near the rabbit's c. The map shows centre (-0.6, 0), 3.2
+        # wide, on a 288 x 216 canvas.
+        map_element = driver.find_element(By.ID, "map")
+        box = scroll_into_view(driver, map_element)
+        scale = 3.2 / 288
+        x, y = 144 + (-0.12 + 0.6) / scale, 108 - 0.74 / scale
+        offset_x = x * box["width"] / 288 - box["width"] / 2
+        offset_y = y * box["height"] / 216 - box["height"] / 2
+        ActionChains(driver).move_to_element_with_offset(
+            map_element, int(round(offset_x)), int(round(offset_y))).click().perform()
+        wait_until(driver, "return JSON.parse(document.body.dataset.c)[2] === 0;")
+        c = json.loads(driver.execute_script("return document.body.dataset.c;"))
+        check(abs(c[0] + 0.12) < 0.02 and abs(c[1] - 0.74) < 0.02, "c = %s" % c)
+        check(re.search(r"c = -0\.1", driver.find_element(By.ID, "c-value").text),
+              "the map's label shows the new c")
+        wait_for_final(driver)
+        shown = shown_image(driver)
+        step("map click set c = %s" % c)
+
+        # Copy the CLI command and render it.
+        driver.find_element(By.ID, "copy-cli").click()
+        wait_until(driver, "return document.body.dataset.cli;")
+        command = driver.execute_script("return document.body.dataset.cli;")
+        step("copied: " + command)
+        check(re.match(r"^quaternia render .* -o quaternia\.png$", command), command)
+        output = os.path.join(work, "cli.png")
+        shell = re.sub(r"-o quaternia\.png$", '-o "$1"',
+                       re.sub(r"^quaternia ", '"$0" ', command))
+        subprocess.run(["sh", "-c", shell, arguments.binary, output], check=True)
+        with open(output, "rb") as rendered:
+            check(rendered.read() == shown,
+                  "quaternia render of the copied command gives the PNG the page shows")
+        step("quaternia render reproduced the page's image byte for byte")
+
+        # The preset buttons come from the server's list (GET /api/presets).
+        names = driver.execute_script(
+            "return [...document.querySelectorAll('#presets button')]"
+            ".map((b) => b.dataset.preset);")
+        check(names[0] == "Start" and "basilica" in names and "rabbit" in names,
+              "preset buttons: %s" % names)
+        basilica = driver.find_element(By.CSS_SELECTOR, "#presets button[data-preset=basilica]")
+        scroll_into_view(driver, basilica)
+        basilica.click()
+        wait_until(driver, "return document.body.dataset.c === '[-1,0,0,0]';")
+        wait_for_final(driver)
+        check(shown_image(driver) != shown, "the basilica preset changes the image")
+        step("presets %s; basilica set c = -1" % names)
+        timeline(driver, arguments.binary, work)
+    errors = browser.uncaught_errors()
+    check(not errors, "the page threw: %s" % errors)
+    print("browser test: passed", flush=True)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--binary", default="build/quaternia")
     parser.add_argument("--screenshot")
     arguments = parser.parse_args()
-    server = Server(arguments.binary)
     size = (1280, 760) if arguments.screenshot else (900, 560)
-    browser = Browser(*size)
     work = tempfile.mkdtemp(prefix="quaternia-browser-")
-    driver = browser.driver
     try:
-        # A small final size keeps the test quick; screenshots fit the window.
-        driver.get(server.url + ("" if arguments.screenshot else "?size=240x160"))
-        wait_for_final(driver)
-        first = shown_image(driver)
-        step("page loaded, final image %d bytes" % len(first))
-
-        if arguments.screenshot:
-            wait_until(driver, "return document.body.dataset.map === 'ready';")
-            driver.save_screenshot(arguments.screenshot)
-            step("wrote " + arguments.screenshot)
-        else:
-            # Drag the slider of c's i component with the mouse: from its middle to 62% of its
-            # width, in 8 moves (offsets are from the element's centre).
-            slider = driver.find_element(By.ID, "ctl-fractal_c-1")
-            box = scroll_into_view(driver, slider)
-            before = driver.execute_script("return document.body.dataset.c;")
-            actions = ActionChains(driver).move_to_element(slider).click_and_hold()
-            for k in range(1, 9):
-                actions.move_to_element_with_offset(slider, int(box["width"] * 0.12 * k / 8), 0)
-            actions.release().perform()
-            wait_until(driver, "return document.body.dataset.c !== arguments[0];", 60, before)
-            wait_for_final(driver)
-            dragged = shown_image(driver)
-            check(dragged != first, "dragging the slider changes the image")
-            step("slider drag changed the image")
-
-            # Click the Mandelbrot map near the rabbit's c. The map shows centre (-0.6, 0), 3.2
-            # wide, on a 288 x 216 canvas.
-            map_element = driver.find_element(By.ID, "map")
-            box = scroll_into_view(driver, map_element)
-            scale = 3.2 / 288
-            x, y = 144 + (-0.12 + 0.6) / scale, 108 - 0.74 / scale
-            offset_x = x * box["width"] / 288 - box["width"] / 2
-            offset_y = y * box["height"] / 216 - box["height"] / 2
-            ActionChains(driver).move_to_element_with_offset(
-                map_element, int(round(offset_x)), int(round(offset_y))).click().perform()
-            wait_until(driver, "return JSON.parse(document.body.dataset.c)[2] === 0;")
-            c = json.loads(driver.execute_script("return document.body.dataset.c;"))
-            check(abs(c[0] + 0.12) < 0.02 and abs(c[1] - 0.74) < 0.02, "c = %s" % c)
-            check(re.search(r"c = -0\.1", driver.find_element(By.ID, "c-value").text),
-                  "the map's label shows the new c")
-            wait_for_final(driver)
-            shown = shown_image(driver)
-            step("map click set c = %s" % c)
-
-            # Copy the CLI command and render it.
-            driver.find_element(By.ID, "copy-cli").click()
-            wait_until(driver, "return document.body.dataset.cli;")
-            command = driver.execute_script("return document.body.dataset.cli;")
-            step("copied: " + command)
-            check(re.match(r"^quaternia render .* -o quaternia\.png$", command), command)
-            output = os.path.join(work, "cli.png")
-            shell = re.sub(r"-o quaternia\.png$", '-o "$1"',
-                           re.sub(r"^quaternia ", '"$0" ', command))
-            subprocess.run(["sh", "-c", shell, arguments.binary, output], check=True)
-            with open(output, "rb") as rendered:
-                check(rendered.read() == shown,
-                      "quaternia render of the copied command gives the PNG the page shows")
-            step("quaternia render reproduced the page's image byte for byte")
-
-            # The preset buttons come from the server's list (GET /api/presets).
-            names = driver.execute_script(
-                "return [...document.querySelectorAll('#presets button')]"
-                ".map((b) => b.dataset.preset);")
-            check(names[0] == "Start" and "basilica" in names and "rabbit" in names,
-                  "preset buttons: %s" % names)
-            basilica = driver.find_element(By.CSS_SELECTOR, "#presets button[data-preset=basilica]")
-            scroll_into_view(driver, basilica)
-            basilica.click()
-            wait_until(driver, "return document.body.dataset.c === '[-1,0,0,0]';")
-            wait_for_final(driver)
-            check(shown_image(driver) != shown, "the basilica preset changes the image")
-            step("presets %s; basilica set c = -1" % names)
-            timeline(driver, arguments.binary, work)
-        errors = browser.uncaught_errors()
-        check(not errors, "the page threw: %s" % errors)
-        print("browser test: passed", flush=True)
+        # The server first, inside the with block: whatever fails after it starts (the browser
+        # too), it is stopped.
+        with Server(arguments.binary) as server, Browser(*size) as browser:
+            explore(server, browser, arguments, work)
     finally:
-        browser.close()
-        server.stop()
         shutil.rmtree(work, ignore_errors=True)
 
 
 if __name__ == "__main__":
     try:
         main()
+    except BrowserUnavailable as error:
+        print("browser test: FAILED: no browser to test with: %s" % error, file=sys.stderr)
+        sys.exit(1)
     except Exception as error:  # one line for ctest's log, then a failing exit
         print("browser test: FAILED: %s" % error, file=sys.stderr)
         sys.exit(1)
