@@ -48,6 +48,12 @@ void addExploreOptions(CLI::App& command, ExploreCommandOptions& options) {
                     "is disconnected")
         ->capture_default_str()
         ->check(CLI::Range(0.1, 600.0));
+    command
+        .add_option("--memory-budget", options.memoryBudget,
+                    "Memory the renders may take, shared by the two at once: a size (512M, 8G), "
+                    "auto (what the server can still take) or unlimited; a request estimated to "
+                    "need more than its share is refused")
+        ->capture_default_str();
 }
 
 void addExploreCommand(CLI::App& app, ExploreCommandOptions& options) {
@@ -69,7 +75,8 @@ int runExploreCommand(const ExploreCommandOptions& options) {
     std::snprintf(seconds, sizeof seconds, "%.17g", limits.requestSeconds);
     arguments.insert(arguments.end(),
                      {"--connections", std::to_string(limits.total), "--connections-per-address",
-                      std::to_string(limits.perAddress), "--request-timeout", seconds});
+                      std::to_string(limits.perAddress), "--request-timeout", seconds,
+                      "--memory-budget", options.memoryBudget});
     if (!options.preset.empty()) arguments.insert(arguments.end(), {"--preset", options.preset});
     // After "--", a scene path that starts with '-' is still a path.
     if (!options.scenePath.empty()) arguments.insert(arguments.end(), {"--", options.scenePath});

@@ -22,6 +22,7 @@ struct ExploreCommandOptions {
     int port = 8080;
     int threads = 0;
     ExploreConnectionLimits connections;  // --connections, --connections-per-address, ...
+    std::string memoryBudget = "auto";    // --memory-budget (memory_budget.h)
 };
 
 // The options of the command, declared on `command` (quaternia's explore subcommand, or

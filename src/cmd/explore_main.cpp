@@ -16,6 +16,8 @@
 #include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
 #include "quaternia/util/error.h"
+#include "quaternia/util/memory_budget.h"
+#include "quaternia/util/parallel.h"
 #include "server/explore_server.h"
 
 namespace quaternia {
@@ -35,6 +37,9 @@ int serveExplorer(const ExploreCommandOptions& options) {
     serverOptions.port = options.port;
     serverOptions.renderThreads = options.threads;
     serverOptions.connections = options.connections;
+    // Resolved here, in the server's own process: `auto` is what this process can still take.
+    serverOptions.memory = parseMemoryBudget(options.memoryBudget, "--memory-budget",
+                                             resolveThreadCount(options.threads));
     serverOptions.startScene =
         options.scenePath.empty() ? defaultScene() : loadScene(options.scenePath);
     if (!options.preset.empty()) applyPreset(serverOptions.startScene, options.preset);

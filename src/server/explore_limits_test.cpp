@@ -67,6 +67,20 @@ TEST_F(ExploreLimit, RenderMaxStepsAtMost100000) {
                   "render.max_steps = 100001 is above the explorer's limit of 100000 steps");
 }
 
+TEST_F(ExploreLimit, RequestsBeyondTheMemoryBudgetAreRefused) {
+    ExploreServerOptions o = options();
+    o.memory = {4 << 20, "--memory-budget"};  // 2 MiB for each of the two renders at once
+    startServer(o);
+    // 640 x 480 in float RGBA alone is 4.7 MiB; 64 x 48 needs some 60 KiB.
+    expectRefusal(get("/api/render?render.width=640&render.height=480&render.samples=1"), 400,
+                  "render.width", "of memory, more than the 2.00 MiB available");
+    expectRefusal(get("/api/mesh?mesh.resolution=256"), 400, "mesh.resolution",
+                  "of memory, more than the 2.00 MiB available");
+    auto r = get("/api/render?render.width=64&render.height=48&render.samples=1");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200) << r->body;
+}
+
 TEST_F(ExploreLimit, DownloadRaysAreCapped) {
     ExploreServerOptions o = options();
     startServer(o);

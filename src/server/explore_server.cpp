@@ -2,6 +2,7 @@
 
 #include <httplib.h>
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <thread>
@@ -11,10 +12,12 @@
 #include "quaternia/mesh/mesher.h"
 #include "quaternia/plane/plane_render.h"
 #include "quaternia/render/render.h"
+#include "quaternia/render/render_png.h"
 #include "quaternia/scene/animation.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_file.h"
 #include "quaternia/util/error.h"
+#include "quaternia/util/memory_budget.h"
 #include "server/explore_connections.h"
 #include "server/explore_film.h"
 #include "server/explore_sessions.h"
@@ -95,8 +98,26 @@ bool runInSlot(ExploreServer::State& state, const std::string& client, Response&
 
 // Renders `scene` in `slot` and answers its PNG, or 204 when a newer request cancelled it.
 // Returns whether it answered the image.
+// A render's share of the server's memory budget: each of the renders at once may take it.
+MemoryBudget renderShare(const ExploreServer::State& state) {
+    MemoryBudget share = state.options.memory;
+    share.bytes /= uint64_t(std::max(1, state.options.concurrentRenders));
+    if (share.bytes == 0 && state.options.memory.bytes != 0) share.bytes = 1;
+    share.source +=
+        " shared by " + std::to_string(state.options.concurrentRenders) + " renders at once";
+    return share;
+}
+
+void requireImageMemory(const ExploreServer::State& state, const Scene& scene, uint64_t bytes) {
+    requireMemory(bytes, renderShare(state), "render.width",
+                  "render.width x render.height = " + std::to_string(scene.render.width) + " x " +
+                      std::to_string(scene.render.height) + ": the image",
+                  "lower render.width and render.height");
+}
+
 bool answerRender(ExploreServer::State& state, const std::string& slot, const Scene& scene,
                   Response& response) {
+    requireImageMemory(state, scene, renderPngMemoryBytes(scene, false));
     RenderResult result;
     bool done = runInSlot(state, slot, response, [&](const WorkOptions& w) {
         RenderOptions options;
@@ -152,6 +173,7 @@ void mandelbrotRoute(ExploreServer::State& state, const Request& request, Respon
                                                 std::to_string(state.options.limits.planePixels) +
                                                 " pixels");
         scene.plane.kind = PlaneKind::Mandelbrot;
+        requireImageMemory(state, scene, planeMemoryBytes(scene));
         try {
             validatePlaneScene(scene);
         } catch (const UserError&) {
@@ -178,7 +200,9 @@ void meshRoute(ExploreServer::State& state, const Request& request, Response& re
         checkMeshRequest(scene, state.options.limits);
         MeshResult mesh;
         if (!runInSlot(state, "", response, [&](const WorkOptions& w) {
-                mesh = meshScene(scene, MeshOptions{w});
+                MeshOptions meshOptions{w};
+                meshOptions.memory = renderShare(state);
+                mesh = meshScene(scene, meshOptions);
                 return mesh.completed;
             }))
             return;

@@ -27,6 +27,7 @@
 #include <string>
 
 #include "quaternia/scene/scene.h"
+#include "quaternia/util/memory_budget.h"
 #include "server/explore_request.h"
 
 namespace quaternia {
@@ -60,6 +61,9 @@ struct ExploreServerOptions {
     double requestBurst = 200;
     ExploreLimits limits;
     ExploreConnectionLimits connections;
+    // The memory renders may take, shared by the concurrentRenders at once: a request whose
+    // estimate exceeds its share is refused (400 naming render.width or mesh.resolution).
+    MemoryBudget memory;  // unlimited unless set
 };
 
 class ExploreServer {
