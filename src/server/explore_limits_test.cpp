@@ -144,26 +144,6 @@ TEST_F(ExploreLimit, AKeyGivenTwiceIsRefused) {
                   "client is given more than once");
 }
 
-// Writes `bytes` on a raw connection and reads until the server closes it (or 5 s pass).
-std::string exchange(int port, const std::string& bytes) {
-    int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    timeval timeout{5, 0};
-    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(uint16_t(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    std::string reply;
-    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
-        (void)!::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL);
-        char buffer[4096];
-        for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;)
-            reply.append(buffer, std::size_t(n));
-    }
-    ::close(fd);
-    return reply;
-}
-
 TEST_F(ExploreLimit, OnlyGetAndHeadAreServed) {
     startServer(options());
     httplib::Client c = client();
@@ -184,9 +164,10 @@ TEST_F(ExploreLimit, OnlyGetAndHeadAreServed) {
     EXPECT_TRUE(head->body.empty());
     // The body is not read, so nothing after it is taken for a request: one answer, then the
     // connection closes (the client's keep-alive notwithstanding).
-    std::string reply = exchange(server_->port(),
-                                 "POST /api/render HTTP/1.1\r\nHost: q\r\nContent-Length: 18\r\n"
-                                 "Connection: keep-alive\r\n\r\nGET / HTTP/1.1\r\n\r\n");
+    std::string reply = sendRaw(server_->port(),
+                                "POST /api/render HTTP/1.1\r\nHost: q\r\nContent-Length: 18\r\n"
+                                "Connection: keep-alive\r\n\r\nGET / HTTP/1.1\r\n\r\n",
+                                false);
     EXPECT_EQ(reply.rfind("HTTP/1.1 405 Method Not Allowed\r\n", 0), 0u) << reply;
     EXPECT_NE(reply.find("Connection: close\r\n"), std::string::npos) << reply;
     EXPECT_EQ(reply.find("HTTP/1.1", 1), std::string::npos) << "a second answer: " << reply;

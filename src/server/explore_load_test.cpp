@@ -29,29 +29,6 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Writes `bytes` on a raw connection and returns what the server answers until it closes the
-// connection or 5 s pass.
-std::string sendRaw(int port, const std::string& bytes) {
-    std::string reply;
-    int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    if (fd < 0) return reply;
-    timeval timeout{5, 0};
-    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(uint16_t(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
-        (void)!::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL);
-        ::shutdown(fd, SHUT_WR);
-        char buffer[4096];
-        for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;)
-            reply.append(buffer, std::size_t(n));
-    }
-    ::close(fd);
-    return reply;
-}
-
 struct Refusal {
     std::string path;
     int status;

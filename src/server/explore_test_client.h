@@ -2,8 +2,12 @@
 // the server tests and the load test.
 #pragma once
 
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <memory>
 #include <string>
@@ -12,6 +16,30 @@
 #include "server/explore_server.h"
 
 namespace quaternia::testing {
+
+// Writes `bytes` on a raw loopback connection to `port` (then, with `endWriting`, shuts its
+// writing side) and returns what the server answers until it closes the connection or 5 s
+// pass.
+inline std::string sendRaw(int port, const std::string& bytes, bool endWriting = true) {
+    std::string reply;
+    int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0) return reply;
+    timeval timeout{5, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(uint16_t(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
+        (void)!::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL);
+        if (endWriting) ::shutdown(fd, SHUT_WR);
+        char buffer[4096];
+        for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;)
+            reply.append(buffer, std::size_t(n));
+    }
+    ::close(fd);
+    return reply;
+}
 
 class ExploreServerFixture : public ::testing::Test {
   protected:
