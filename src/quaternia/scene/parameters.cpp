@@ -288,8 +288,9 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
         std::size_t diagonal = row[0];
         row[0] = i;
         for (std::size_t j = 1; j <= b.size(); ++j) {
-            std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            const std::size_t above = row[j];
+            const std::size_t edit = std::min(above, row[j - 1]) + 1;
+            row[j] = std::min(edit, diagonal + (a[i - 1] != b[j - 1]));
             diagonal = above;
         }
     }
@@ -297,6 +298,11 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 }
 
 namespace {
+
+// Names are compared by their first 40 bytes, more than the longest in the table has (23): no
+// typo is longer, and the edit distance costs the product of the lengths (an explorer query or a
+// scene file can hold unknown keys of thousands of bytes).
+constexpr std::size_t kMaxComparedLength = 40;
 
 std::size_t commonPrefixLength(std::string_view a, std::string_view b) {
     std::size_t n = 0;
@@ -323,6 +329,7 @@ struct Nearest {
 }  // namespace
 
 std::string nearestParameterName(std::string_view name) {
+    name = name.substr(0, kMaxComparedLength);
     std::size_t dot = name.find('.');
     bool hasSection = dot != std::string_view::npos;
     std::string_view section = hasSection ? name.substr(0, dot) : std::string_view();
@@ -347,6 +354,7 @@ std::string nearestParameterName(std::string_view name) {
 }
 
 std::string nearestSectionName(std::string_view section) {
+    section = section.substr(0, kMaxComparedLength);
     Nearest nearest{section, {}};
     for (const auto& candidate : parameterSections())
         nearest.consider(candidate, editDistance(section, candidate));

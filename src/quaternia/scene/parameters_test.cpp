@@ -295,6 +295,16 @@ TEST(ParameterSet, LeavesTheSceneUnchangedWhenItThrows) {
     EXPECT_EQ(s.fractal.c, defaultScene().fractal.c);
 }
 
+// Past 40 bytes a name is no typo; comparing all of it would cost its length times each name's.
+TEST(ParameterNearestName, ComparesOnlyTheFirst40Bytes) {
+    const std::string typo = "render.widht" + std::string(28, 'x');
+    EXPECT_EQ(nearestParameterName(typo + std::string(100000, 'y')), nearestParameterName(typo));
+    EXPECT_EQ(nearestSectionName("shadin" + std::string(100000, 'g')),
+              nearestSectionName("shadin" + std::string(34, 'g')));
+    for (const Parameter& p : parameterTable())
+        EXPECT_LE(p.name().size(), 30u) << p.name();
+}
+
 TEST(ParameterNearestName, SuggestsTheClosestName) {
     EXPECT_EQ(nearestParameterName("render.widht"), "render.width");
     EXPECT_EQ(nearestParameterName("camera.fov_deg"), "camera.fov");
