@@ -4,9 +4,11 @@
 #   scripts/fuzz.sh                  builds them and runs the short ctest: every target over its
 #                                    seed corpus plus a fixed number of runs, and the
 #                                    regression inputs
-#   scripts/fuzz.sh campaign N [T]   runs each target, one after another, for N executions
-#                                    (at most T seconds each, if given) from build-fuzz/campaign,
-#                                    and prints executions, coverage and findings per target
+#   scripts/fuzz.sh campaign N [T [TARGET...]]
+#                                    runs each target (or the ones named), one after another, for
+#                                    N executions (at most T seconds each, if T > 0) from
+#                                    build-fuzz/campaign, and prints executions, exec/s, coverage
+#                                    and findings per target
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,13 +24,15 @@ if [ "${1:-}" != campaign ]; then
   exit 0
 fi
 
-runs=${2:?usage: scripts/fuzz.sh campaign RUNS [SECONDS]}
+runs=${2:?usage: scripts/fuzz.sh campaign RUNS [SECONDS [TARGET...]]}
 seconds=${3:-0}
+if [ $# -gt 3 ]; then targets=("${@:4}"); fi
 # Allocation stacks of depth 0 make the allocation-heavy targets about three times faster; a
 # finding is replayed with the full reports (scripts/fuzz.sh's ctest, or the target alone).
 export ASAN_OPTIONS=malloc_context_size=0:quarantine_size_mb=16:detect_leaks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-printf '%-14s %12s %7s %8s %7s %9s %8s\n' target executions cov ft corpus findings seconds
+printf '%-14s %12s %7s %7s %8s %7s %9s %8s\n' target executions exec/s cov ft corpus findings \
+  seconds
 for target in "${targets[@]}"; do
   corpus=build-fuzz/campaign/$target
   findings=build-fuzz/campaign/findings-$target
@@ -41,9 +45,10 @@ for target in "${targets[@]}"; do
     "$corpus" "fuzz/corpus/$target" >"$log" 2>&1 || true
   elapsed=$(( $(date +%s) - start ))
   executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
   last=$(grep -E '^#[0-9]+[[:space:]]+(DONE|pulse|NEW|REDUCE|RELOAD)' "$log" | tail -1 || true)
   cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
   ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
-  printf '%-14s %12s %7s %8s %7s %9s %8s\n' "$target" "${executions:-?}" "${cov:-?}" \
-    "${ft:-?}" "$(ls "$corpus" | wc -l)" "$(ls "$findings" | wc -l)" "$elapsed"
+  printf '%-14s %12s %7s %7s %8s %7s %9s %8s\n' "$target" "${executions:-?}" "${rate:-?}" \
+    "${cov:-?}" "${ft:-?}" "$(ls "$corpus" | wc -l)" "$(ls "$findings" | wc -l)" "$elapsed"
 done

@@ -47,10 +47,20 @@ ComplexPolynomial ComplexPolynomial::derivativePolynomial() const {
 
 Quaternion planeAxis(const Quaternion& q) {
     double n = imaginaryNorm(q);
-    return n > 0 ? imaginaryPart(q) / n : kUnitI;
+    if (n > 1e-150 && n < 1e150) return imaginaryPart(q) / n;
+    // The squares under- or overflow (a coefficient of 1e-228 found by fuzzing got the axis i
+    // whatever its direction): scaled by the largest component first.
+    const double largest = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+    if (largest == 0) return kUnitI;
+    const Quaternion scaled = imaginaryPart(q) / largest;
+    return scaled / imaginaryNorm(scaled);
 }
 
 bool inPlane(const Quaternion& q, const Quaternion& axis) {
+    // Above 1e150 the squares could overflow, and inf <= inf took a coefficient of 1e306 j to be
+    // in the plane C_i (found by fuzzing); the test is relative there, so scaling keeps it.
+    const double largest = std::max({std::abs(q.w), std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+    if (largest > 1e150 && std::isfinite(largest)) return inPlane(q / largest, axis);
     Quaternion v = imaginaryPart(q);
     Quaternion off = v - axis * dot(v, axis);
     return norm(off) <= kPlaneTolerance * std::max(1.0, norm(q));

@@ -34,6 +34,20 @@ TEST(ComplexPolynomial, RestrictsToThePlaneOfTheCoefficients) {
     EXPECT_NEAR(norm(image - restricted->toQuaternion(expected)), 0, 1e-14);
 }
 
+// The squares of the components under- or overflow here: the axis still follows the coefficient
+// (a coefficient of 1e-228 got the axis i whatever its direction; found by fuzzing).
+TEST(ComplexPolynomial, PlaneOfTinyAndHugeCoefficients) {
+    EXPECT_EQ(planeAxis(Quaternion(0, 0, 3e-228, 0)), kUnitJ);
+    EXPECT_EQ(planeAxis(Quaternion(1, 0, 0, -1e200)), -kUnitK);
+    const Quaternion axis = planeAxis(Quaternion(-3.2e-228, 9.6e-228, 3.2e-228, 3.2e-228));
+    const Quaternion expected = planeAxis(Quaternion(-3.2, 9.6, 3.2, 3.2));
+    for (int k = 0; k < 4; ++k)
+        EXPECT_NEAR(axis[k], expected[k], 1e-15);
+    EXPECT_EQ(planeAxis(Quaternion(5)), kUnitI);
+    EXPECT_FALSE(inPlane(Quaternion(0, 0, 1e306, 0), kUnitI));
+    EXPECT_TRUE(inPlane(Quaternion(1e306, 1e306, 0, 0), kUnitI));
+}
+
 TEST(ComplexPolynomial, NoRestrictionWhenCoefficientsLeaveThePlane) {
     EXPECT_FALSE(restrictToComplexPlane(compileFormula("i*z*j*z + c", Quaternion(0.1))));
     // One non-real coefficient always spans a plane.

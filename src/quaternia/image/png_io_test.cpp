@@ -406,6 +406,30 @@ TEST(PngIo, MalformedDataThrowsWithTheReason) {
     EXPECT_THROW(decodePng(badCrc), std::runtime_error);
 }
 
+// The ancillary chunks are skipped unread (png_read.cpp): malformed ones change nothing, and one
+// that declares more bytes than the file holds ends as a truncated file, without libpng first
+// allocating and clearing its declared 1.6 GB (found by fuzzing).
+TEST(PngIo, SkipsAncillaryChunks) {
+    const std::vector<Chunk> chunks = {{"gAMA", {1, 2}},
+                                       {"tEXt", {'k', 0, 'v'}},
+                                       {"zTXt", {'k', 0, 0, 0xff, 0xff}},
+                                       {"PLTE", {10, 20, 30, 40, 50, 60}},
+                                       {"tRNS", {128}}};
+    Image image = decodePng(makePng(2, 1, 8, 3, {0, 1, 0}, chunks));
+    expectPixel(image, 0, 0, {q8(40), q8(50), q8(60), 1});
+    expectPixel(image, 1, 0, {q8(10), q8(20), q8(30), q8(128)});
+
+    std::vector<uint8_t> png = makePng(2, 1, 8, 3, {0, 1, 0}, {{"PLTE", {10, 20, 30, 40, 50, 60}}});
+    const std::vector<uint8_t> huge = {0x63, 0x89, 0x48, 0x00, 'z', 'T', 'X', 't', 'k', 0, 0};
+    png.insert(png.begin() + 33, huge.begin(), huge.end());  // after IHDR
+    try {
+        decodePng(png);
+        FAIL() << "a chunk longer than the file was read";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+    }
+}
+
 TEST(PngIo, RefusesHugeDimensionsBeforeAllocating) {
     EXPECT_THROW(decodePng(makePng(100000, 1, 8, 0, {0})), std::runtime_error);
     EXPECT_THROW(decodePng(makePng(30000, 30000, 8, 0, {0})), std::runtime_error);

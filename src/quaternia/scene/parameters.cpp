@@ -182,6 +182,47 @@ int64_t checkedInteger(const Parameter& p, const ParameterValue& value) {
     return n;
 }
 
+// The length of the well-formed UTF-8 sequence at text[i] (Unicode's table 3-7: no overlong
+// forms, no surrogates, nothing above U+10FFFF), or 0.
+std::size_t utf8Length(std::string_view text, std::size_t i) {
+    const auto byte = [&](std::size_t k) {
+        return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u;
+    };
+    const unsigned lead = byte(0);
+    const auto continuation = [&](std::size_t k, unsigned low = 0x80, unsigned high = 0xBF) {
+        return byte(k) >= low && byte(k) <= high;
+    };
+    if (lead < 0x80) return 1;
+    if (lead >= 0xC2 && lead <= 0xDF) return continuation(1) ? 2 : 0;
+    if (lead >= 0xE0 && lead <= 0xEF) {
+        const unsigned low = lead == 0xE0 ? 0xA0 : 0x80, high = lead == 0xED ? 0x9F : 0xBF;
+        return continuation(1, low, high) && continuation(2) ? 3 : 0;
+    }
+    if (lead >= 0xF0 && lead <= 0xF4) {
+        const unsigned low = lead == 0xF0 ? 0x90 : 0x80, high = lead == 0xF4 ? 0x8F : 0xBF;
+        return continuation(1, low, high) && continuation(2) && continuation(3) ? 4 : 0;
+    }
+    return 0;
+}
+
+// Text values go into scene files, which are TOML: its strings must be UTF-8, and control
+// characters other than tab (which a formula may hold as space) have no use in a formula or a
+// name. Refusing both here keeps every accepted scene writable and readable again. The message
+// leaves the bytes out.
+void checkCharacters(const Parameter& p, std::string_view text) {
+    for (std::size_t i = 0; i < text.size();) {
+        const std::size_t length = utf8Length(text, i);
+        if (length == 0)
+            throw UserError(p.name(),
+                            p.name() + " is not valid UTF-8 (byte " + std::to_string(i + 1) + ")");
+        const auto c = static_cast<unsigned char>(text[i]);
+        if ((c < 0x20 && c != '\t') || c == 0x7F)
+            throw UserError(p.name(), p.name() + " contains a control character (byte " +
+                                          std::to_string(i + 1) + ")");
+        i += length;
+    }
+}
+
 std::string checkedText(const Parameter& p, const ParameterValue& value) {
     const auto* text = std::get_if<std::string>(&value);
     if (text == nullptr) throwWrongType(p, value);
@@ -198,6 +239,7 @@ std::string checkedText(const Parameter& p, const ParameterValue& value) {
         throw UserError(p.name(), p.name() + " has " + std::to_string(text->size()) +
                                       " characters; at most " + formatBound(p.maximum) +
                                       " are allowed");
+    checkCharacters(p, *text);
     return *text;
 }
 
@@ -246,8 +288,9 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
         std::size_t diagonal = row[0];
         row[0] = i;
         for (std::size_t j = 1; j <= b.size(); ++j) {
-            std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            const std::size_t above = row[j];
+            const std::size_t edit = std::min(above, row[j - 1]) + 1;
+            row[j] = std::min(edit, diagonal + (a[i - 1] != b[j - 1]));
             diagonal = above;
         }
     }
@@ -255,6 +298,11 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 }
 
 namespace {
+
+// Names are compared by their first 40 bytes, more than the longest in the table has (23): no
+// typo is longer, and the edit distance costs the product of the lengths (an explorer query or a
+// scene file can hold unknown keys of thousands of bytes).
+constexpr std::size_t kMaxComparedLength = 40;
 
 std::size_t commonPrefixLength(std::string_view a, std::string_view b) {
     std::size_t n = 0;
@@ -281,6 +329,7 @@ struct Nearest {
 }  // namespace
 
 std::string nearestParameterName(std::string_view name) {
+    name = name.substr(0, kMaxComparedLength);
     std::size_t dot = name.find('.');
     bool hasSection = dot != std::string_view::npos;
     std::string_view section = hasSection ? name.substr(0, dot) : std::string_view();
@@ -305,6 +354,7 @@ std::string nearestParameterName(std::string_view name) {
 }
 
 std::string nearestSectionName(std::string_view section) {
+    section = section.substr(0, kMaxComparedLength);
     Nearest nearest{section, {}};
     for (const auto& candidate : parameterSections())
         nearest.consider(candidate, editDistance(section, candidate));

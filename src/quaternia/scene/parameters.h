@@ -67,7 +67,8 @@ const Parameter* findParameter(std::string_view name);
 // Levenshtein distance (insertions, deletions and substitutions of single bytes).
 std::size_t editDistance(std::string_view a, std::string_view b);
 // The table name closest to `name`, comparing both the whole name and the key alone (so that
-// "width" or "image.width" suggest "render.width"). Ties go to the earlier table entry.
+// "width" or "image.width" suggest "render.width"). Ties go to the earlier table entry. Only the
+// first 40 bytes of `name` are compared (also in nearestSectionName).
 std::string nearestParameterName(std::string_view name);
 // The section closest to `section`.
 std::string nearestSectionName(std::string_view section);

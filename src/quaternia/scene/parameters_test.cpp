@@ -269,10 +269,40 @@ TEST(ParameterSet, RejectsEmptyAndOverlongText) {
                  "fractal.formula has 1001 characters; at most 1000 are allowed");
 }
 
+// Scene files are TOML, whose strings are UTF-8: text that is not, or that holds control
+// characters, would be written into a file that does not read back (found by fuzzing).
+TEST(ParameterSet, RejectsTextThatIsNotUtf8OrHasControlCharacters) {
+    for (const std::string& bad :
+         {std::string("z^2 + \xb0"), std::string("z^2\xc0\x80"), std::string("\xed\xa0\x80"),
+          std::string("z\xf4\x90\x80\x80"), std::string("z^2 + c\n"), std::string("z\x04"),
+          std::string("z\x7f"), std::string("z\0", 2)}) {
+        UserError error = setError("fractal.formula", bad);
+        EXPECT_EQ(error.key(), "fractal.formula");
+    }
+    EXPECT_STREQ(setError("fractal.formula", std::string("z^2 \xb0")).what(),
+                 "fractal.formula is not valid UTF-8 (byte 5)");
+    EXPECT_STREQ(setError("fractal.formula", std::string("z\t\r")).what(),
+                 "fractal.formula contains a control character (byte 3)");
+    Scene s = defaultScene();
+    setParameter(s, "fractal.formula", std::string("z^2\t+ c"));  // a tab is white space
+    setParameter(s, "fractal.formula", std::string("z^2 + c \xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80"));
+    EXPECT_EQ(s.fractal.formula, "z^2 + c \xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80");
+}
+
 TEST(ParameterSet, LeavesTheSceneUnchangedWhenItThrows) {
     Scene s = defaultScene();
     EXPECT_THROW(setParameter(s, "fractal.c", std::vector<double>{1, 2, 3, 99}), UserError);
     EXPECT_EQ(s.fractal.c, defaultScene().fractal.c);
+}
+
+// Past 40 bytes a name is no typo; comparing all of it would cost its length times each name's.
+TEST(ParameterNearestName, ComparesOnlyTheFirst40Bytes) {
+    const std::string typo = "render.widht" + std::string(28, 'x');
+    EXPECT_EQ(nearestParameterName(typo + std::string(100000, 'y')), nearestParameterName(typo));
+    EXPECT_EQ(nearestSectionName("shadin" + std::string(100000, 'g')),
+              nearestSectionName("shadin" + std::string(34, 'g')));
+    for (const Parameter& p : parameterTable())
+        EXPECT_LE(p.name().size(), 30u) << p.name();
 }
 
 TEST(ParameterNearestName, SuggestsTheClosestName) {
