@@ -333,6 +333,10 @@ ExploreConnectionStats ExploreServer::connectionStats() const {
     return state_->http.stats();
 }
 
+int ExploreServer::rendersRunning() const {
+    return state_->gate.running();
+}
+
 void ExploreServer::run() {
     bind();
     state_->http.listen_after_bind();

@@ -77,6 +77,8 @@ class ExploreServer {
     int bind();
     int port() const;
     ExploreConnectionStats connectionStats() const;
+    // Renders (and meshes, maps) running now, within ExploreServerOptions::concurrentRenders.
+    int rendersRunning() const;
     // Serves until stop() (from another thread or a signal handler's thread).
     void run();
     // bind() (if not yet) and run() on a background thread; for tests.

@@ -45,6 +45,11 @@ bool RenderGate::enter(const std::atomic<bool>& cancel) {
     return true;
 }
 
+int RenderGate::running() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return running_;
+}
+
 void RenderGate::leave() {
     {
         std::lock_guard lock(mutex_);

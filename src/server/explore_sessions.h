@@ -43,6 +43,8 @@ class RenderGate {
     // Waits for a place; false (no place taken) if `cancel` was set first.
     bool enter(const std::atomic<bool>& cancel);
     void leave();
+    // Places taken now.
+    int running();
 
     // Holds a place for its lifetime once entered.
     class Pass {
