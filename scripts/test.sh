@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # One command from a fresh Debian 12 checkout to every test: installs the packages, builds and
 # runs the GoogleTest suite in Release, then again under AddressSanitizer and
-# UndefinedBehaviorSanitizer. Also builds the benchmarks, so that they cannot rot. The Release
-# tests include the explorer in headless chromium (tests/browser).
+# UndefinedBehaviorSanitizer, then builds the libFuzzer targets with clang-14 and runs their short
+# runs and regression inputs (scripts/fuzz.sh). Also builds the benchmarks, so that they cannot
+# rot. The Release tests include the explorer in headless chromium (tests/browser).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
