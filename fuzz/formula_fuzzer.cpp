@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <vector>
 
 #include "fuzz/fuzz_check.h"
 #include "quaternia/algebra/complex_polynomial.h"
@@ -42,13 +43,15 @@ double magnitude(const Polynomial& p, double r) {
 // can change, times |z|^degree.
 double planeSlack(const Polynomial& p, double r) {
     double sum = 0;
+    std::vector<double> norms;
     for (const Term& term : p.terms()) {
-        for (size_t j = 0; j < term.coefficients.size(); ++j) {
+        norms.clear();
+        for (const Quaternion& a : term.coefficients)
+            norms.push_back(safeNorm(a));
+        for (size_t j = 0; j < norms.size(); ++j) {
             double product = std::pow(r, term.degree()) * 1e-12;
-            for (size_t i = 0; i < term.coefficients.size(); ++i) {
-                const double n = safeNorm(term.coefficients[i]);
-                product *= i == j ? std::max(1.0, n) : n;
-            }
+            for (size_t i = 0; i < norms.size(); ++i)
+                product *= i == j ? std::max(1.0, norms[i]) : norms[i];
             sum += product;
         }
     }
@@ -122,8 +125,9 @@ void checkPowerForm(const Polynomial& p) {
 // bound with several would cost tens of milliseconds an input.
 void checkEscapeRadius(const Polynomial& p) {
     int topTerms = 0;
+    const int degree = p.degree();  // a loop over the terms
     for (const Term& term : p.terms())
-        topTerms += term.degree() == p.degree();
+        topTerms += term.degree() == degree;
     if (topTerms != 1) return;
     try {
         const double radius = p.escapeRadius();

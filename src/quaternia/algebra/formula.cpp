@@ -3,9 +3,10 @@
 #include "quaternia/algebra/formula.h"
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <charconv>
-#include <map>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -292,36 +293,55 @@ using Terms = std::vector<Term>;
     throw FormulaError(0, "formula too large: " + why);
 }
 
-struct CoefficientsLess {
-    bool operator()(const std::vector<Quaternion>& a, const std::vector<Quaternion>& b) const {
-        // Component by component, by name: this comparison is most of an expansion's time.
-        auto less = [](const Quaternion& p, const Quaternion& q) {
-            if (p.w != q.w) return p.w < q.w;
-            if (p.x != q.x) return p.x < q.x;
-            if (p.y != q.y) return p.y < q.y;
-            return p.z < q.z;
-        };
-        return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), less);
-    }
-};
+constexpr const char* kOverflow = "a coefficient is not finite (overflow)";
 
-// Adds like terms, a z a1 ... z ad + b z a1 ... z ad = (a + b) z a1 ... z ad (the same
-// coefficients after the first), keeping first-occurrence order, and drops zero terms.
+// Terms are alike when their coefficients after the first are equal (==, so -0 is +0); the hash
+// of those coefficients agrees for like terms.
+std::uint64_t tailHash(const Term& term) {
+    std::uint64_t hash = term.coefficients.size();
+    for (std::size_t i = 1; i < term.coefficients.size(); ++i) {
+        const Quaternion& a = term.coefficients[i];
+        for (const double v : {a.w, a.x, a.y, a.z}) {
+            hash = (hash ^ std::bit_cast<std::uint64_t>(v == 0 ? 0.0 : v)) * 0x9E3779B97F4A7C15u;
+            hash ^= hash >> 29;
+        }
+    }
+    return hash;
+}
+
+bool sameTail(const Term& a, const Term& b) {
+    return a.coefficients.size() == b.coefficients.size() &&
+           std::equal(a.coefficients.begin() + 1, a.coefficients.end(), b.coefficients.begin() + 1);
+}
+
+// Adds like terms, a z a1 ... z ad + b z a1 ... z ad = (a + b) z a1 ... z ad, keeping
+// first-occurrence order and adding in that order, and drops zero terms. Like terms are found
+// through an open-addressing table of indices into the result: this is most of an expansion's
+// time, and a search tree of copied coefficient lists cost several times more.
 Terms combineLikeTerms(Terms terms) {
+    constexpr std::uint32_t kEmpty = ~std::uint32_t(0);
+    const std::size_t slotCount = std::bit_ceil(2 * terms.size() + 1);
+    std::vector<std::uint32_t> slots(slotCount, kEmpty);
     Terms combined;
-    std::map<std::vector<Quaternion>, size_t, CoefficientsLess> index;
+    combined.reserve(terms.size());
     for (Term& term : terms) {
         const std::vector<Quaternion>& a = term.coefficients;
+        // Overflow is final (no later step makes an infinity or NaN finite), and NaN, equal to
+        // nothing, would make every such term unlike all others.
+        if (!std::all_of(a.begin(), a.end(), [](const Quaternion& q) { return isFinite(q); }))
+            throw FormulaError(0, kOverflow);
         if (std::any_of(a.begin(), a.end(),
                         [](const Quaternion& q) { return q == Quaternion{}; })) {
             continue;
         }
-        auto [it, inserted] =
-            index.emplace(std::vector<Quaternion>(a.begin() + 1, a.end()), combined.size());
-        if (inserted) {
+        std::size_t slot = tailHash(term) & (slotCount - 1);
+        while (slots[slot] != kEmpty && !sameTail(combined[slots[slot]], term))
+            slot = (slot + 1) & (slotCount - 1);
+        if (slots[slot] == kEmpty) {
+            slots[slot] = std::uint32_t(combined.size());
             combined.push_back(std::move(term));
         } else {
-            combined[it->second].coefficients[0] += a[0];
+            combined[slots[slot]].coefficients[0] += term.coefficients[0];
         }
     }
     std::erase_if(combined, [](const Term& t) { return t.coefficients[0] == Quaternion{}; });
@@ -414,7 +434,7 @@ Polynomial Formula::expand(const Quaternion& c) const {
     Terms terms = expandNode(*root_, c);
     for (const Term& t : terms) {
         for (const Quaternion& a : t.coefficients) {
-            if (!isFinite(a)) throw FormulaError(0, "a coefficient is not finite (overflow)");
+            if (!isFinite(a)) throw FormulaError(0, kOverflow);
         }
     }
     return Polynomial(std::move(terms));

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -64,8 +65,10 @@ const std::vector<std::string>& parameterSections();
 // nullptr if `name` ("section.key") is not in the table.
 const Parameter* findParameter(std::string_view name);
 
-// Levenshtein distance (insertions, deletions and substitutions of single bytes).
-std::size_t editDistance(std::string_view a, std::string_view b);
+// Levenshtein distance (insertions, deletions and substitutions of single bytes); a distance
+// above `bound` is reported as bound + 1 (and found sooner).
+std::size_t editDistance(std::string_view a, std::string_view b,
+                         std::size_t bound = std::numeric_limits<std::size_t>::max());
 // The table name closest to `name`, comparing both the whole name and the key alone (so that
 // "width" or "image.width" suggest "render.width"). Ties go to the earlier table entry. Only the
 // first 40 bytes of `name` are compared (also in nearestSectionName).

@@ -1,5 +1,6 @@
 #include "quaternia/scene/parameters.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -325,6 +326,74 @@ TEST(ParameterNearestName, SuggestsTheClosestName) {
     EXPECT_EQ(nearestSectionName("shade"), "shading");
 }
 
+// The whole dynamic-programming table of the Levenshtein distance (Wagner and Fischer, 1974).
+size_t wholeTableDistance(std::string_view a, std::string_view b) {
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i)
+        d[i][0] = i;
+    for (size_t j = 0; j <= b.size(); ++j)
+        d[0][j] = j;
+    for (size_t i = 1; i <= a.size(); ++i)
+        for (size_t j = 1; j <= b.size(); ++j)
+            d[i][j] = std::min(
+                {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+    return d[a.size()][b.size()];
+}
+
+// nearestParameterName computes each distance only up to the best so far; with the whole
+// distances (the rule its comments state) it must choose the same names.
+std::string nearestByWholeDistances(std::string_view name) {
+    name = name.substr(0, 40);
+    const size_t dot = name.find('.');
+    const std::string_view section = dot == std::string_view::npos ? "" : name.substr(0, dot);
+    const std::string_view key = dot == std::string_view::npos ? name : name.substr(dot + 1);
+    const auto& sections = parameterSections();
+    const bool known = std::find(sections.begin(), sections.end(), section) != sections.end();
+    std::string best;
+    size_t bestDistance = SIZE_MAX, bestPrefix = 0;
+    for (const Parameter& p : parameterTable()) {
+        size_t keyDistance = wholeTableDistance(key, p.key);
+        if (key.size() >= 3 && p.key.starts_with(key))
+            keyDistance = std::min<size_t>(keyDistance, 1);
+        const size_t sectionCost = section == p.section ? 0 : known ? 2 : 1;
+        const std::string candidate = p.name();
+        const size_t distance =
+            std::min(wholeTableDistance(name, candidate), keyDistance + sectionCost);
+        size_t prefix = 0;
+        while (prefix < name.size() && prefix < candidate.size() &&
+               name[prefix] == candidate[prefix])
+            ++prefix;
+        if (distance < bestDistance || (distance == bestDistance && prefix > bestPrefix))
+            best = candidate, bestDistance = distance, bestPrefix = prefix;
+    }
+    return best;
+}
+
+TEST(ParameterNearestName, AgreesWithTheWholeDistances) {
+    std::vector<std::string> names = {"",
+                                      "x",
+                                      "render",
+                                      "render.",
+                                      ".width",
+                                      "widht",
+                                      "camera.fov_deg",
+                                      "slice.w",
+                                      "fractal.c.x",
+                                      std::string(60, 'q')};
+    for (const Parameter& p : parameterTable()) {
+        const std::string n = p.name();
+        names.push_back(n);
+        names.push_back(n.substr(0, n.size() / 2));
+        names.push_back(n.substr(n.size() / 3));
+        names.push_back(n + "s");
+        names.push_back(std::string(n.rbegin(), n.rend()));
+        names.push_back(p.key);
+        names.push_back("shading." + p.key);
+    }
+    for (const std::string& name : names)
+        EXPECT_EQ(nearestParameterName(name), nearestByWholeDistances(name)) << name;
+}
+
 TEST(ParameterEditDistance, CountsSingleCharacterEdits) {
     EXPECT_EQ(editDistance("", ""), 0u);
     EXPECT_EQ(editDistance("", "abc"), 3u);
@@ -332,6 +401,37 @@ TEST(ParameterEditDistance, CountsSingleCharacterEdits) {
     EXPECT_EQ(editDistance("widht", "width"), 2u);  // no transpositions
     EXPECT_EQ(editDistance("kitten", "sitting"), 3u);
     EXPECT_EQ(editDistance("sitting", "kitten"), 3u);
+    // Above the bound, bound + 1; at or below it, exact.
+    EXPECT_EQ(editDistance("kitten", "sitting", 3), 3u);
+    EXPECT_EQ(editDistance("kitten", "sitting", 2), 3u);
+    EXPECT_EQ(editDistance("kitten", "sitting", 0), 1u);
+    EXPECT_EQ(editDistance("a", "abcdefgh", 4), 5u);
+    EXPECT_EQ(editDistance("abcdefgh", "hgfedcba", 1), 2u);
+}
+
+TEST(ParameterEditDistance, AgreesWithTheWholeTable) {
+    // Short texts over a small alphabet (many matches), words of both kinds' lengths (the
+    // bit-parallel path holds up to 64 bytes, the row-by-row one the rest) and every bound.
+    std::vector<std::string> texts = {"", "a", "ab", "ba", "abc", "cab", "aabbcc", "abcabc"};
+    uint64_t state = 12345;
+    auto next = [&state] { return state = state * 6364136223846793005u + 1442695040888963407u; };
+    for (size_t length : {5, 17, 40, 63, 64, 65, 70, 130}) {
+        for (int copy = 0; copy < 3; ++copy) {
+            std::string text;
+            for (size_t i = 0; i < length; ++i)
+                text += char('a' + (next() >> 33) % 4);
+            texts.push_back(text);
+        }
+    }
+    for (const std::string& a : texts) {
+        for (const std::string& b : texts) {
+            const size_t whole = wholeTableDistance(a, b);
+            ASSERT_EQ(editDistance(a, b), whole) << a << " / " << b;
+            for (size_t bound : {size_t(0), size_t(1), whole / 2, whole, whole + 3})
+                ASSERT_EQ(editDistance(a, b, bound), std::min(whole, bound + 1))
+                    << a << " / " << b << " bound " << bound;
+        }
+    }
 }
 
 TEST(ParameterValidateScene, RejectsACameraLookingAtItsOwnPosition) {
