@@ -176,9 +176,11 @@ std::vector<int64_t> framesToRender(const AnimateCommandOptions& options, int64_
 void printFilmSummary(const AnimateCommandOptions& options, const Scene& film, int64_t count,
                       std::pair<int64_t, int64_t> range, const FilmStats& stats,
                       const Json& extra) {
+    std::FILE* stream = summaryStream({options.video});
     double framesPerSecond = stats.seconds > 0 ? double(stats.rendered) / stats.seconds : 0;
     if (!options.json) {
-        std::printf(
+        std::fprintf(
+            stream,
             "quaternia: %lld frame%s rendered, %lld skipped (frames %lld-%lld of %lld, %dx%d) "
             "into %s in %.2f s, %.3g frames/s%s%s\n",
             (long long)stats.rendered, stats.rendered == 1 ? "" : "s", (long long)stats.skipped,
@@ -205,7 +207,7 @@ void printFilmSummary(const AnimateCommandOptions& options, const Scene& film, i
     json["samples"] = film.render.samples;
     json["threads"] = stats.threads;
     json.update(extra);
-    std::printf("%s\n", jsonText(json).c_str());
+    std::fprintf(stream, "%s\n", jsonText(json).c_str());
 }
 
 std::string frameFileName(int64_t frame, int64_t count) {

@@ -47,6 +47,20 @@ TEST_F(Cli, PrintsJsonSummary) {
                                  testing::libraryRenderPng(testing::tinyScene(24, 18)));
 }
 
+TEST_F(Cli, ImageToStandardOutputKeepsTheSummaryOut) {
+    // `-o /dev/stdout > file`: the file holds the PNG alone, the summary goes to stderr, and
+    // /dev/stdout stays the system's link (it used to be renamed over).
+    for (const std::string& json : {std::string(), std::string(" --json")}) {
+        CommandResult r = run("render -o /dev/stdout" + kTiny + json);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        testing::expectPngIsLibrarys(r.out, testing::libraryRenderPng(testing::tinyScene(24, 18)));
+        EXPECT_NE(r.err.find(json.empty() ? "quaternia: wrote /dev/stdout" : "\"rays\":432"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_TRUE(fs::is_symlink("/dev/stdout"));
+    }
+}
+
 TEST_F(Cli, ChoosesTheLaneTargetHighwayChooses) {
     // quaternia answers Highway's dispatch itself (highway_runtime.cpp); this test links
     // Highway's own run time, whose choice is the best target both support and compiled.

@@ -25,8 +25,10 @@ Scene meshSceneFromOptions(const MeshCommandOptions& options) {
 
 void printSummary(const MeshCommandOptions& options, const Scene& scene, MeshFormat format,
                   const MeshStats& stats, const MeshCheck& check, double seconds) {
+    std::FILE* stream = summaryStream({options.output});
     if (!options.json) {
-        std::printf(
+        std::fprintf(
+            stream,
             "quaternia: wrote %s (%s, %lld triangles, %lld vertices, %lld component%s, %s) in "
             "%.2f s; volume %.6g, area %.6g; resolution %d (cell %.4g), %lld of %lld blocks, "
             "%d thread%s\n",
@@ -72,7 +74,7 @@ void printSummary(const MeshCommandOptions& options, const Scene& scene, MeshFor
     json["threads"] = stats.threads;
     json["mesh_seconds"] = stats.seconds;
     json["seconds"] = seconds;
-    std::printf("%s\n", jsonText(json).c_str());
+    std::fprintf(stream, "%s\n", jsonText(json).c_str());
 }
 
 }  // namespace

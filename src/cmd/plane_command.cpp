@@ -31,14 +31,16 @@ std::string connectednessNote(const Scene& scene) {
 
 void printSummary(const PlaneCommandOptions& options, const Scene& scene, const PlaneImage& image,
                   const std::string& note) {
+    std::FILE* stream = summaryStream({options.output});
     const std::string kind = std::get<std::string>(findParameter("plane.kind")->read(scene));
     if (!options.json) {
-        std::printf(
+        std::fprintf(
+            stream,
             "quaternia: wrote %s (%s, %dx%d, %d sample%s per pixel) in %.2f s, %d thread%s\n",
             options.output.c_str(), kind.c_str(), scene.render.width, scene.render.height,
             scene.render.samples, scene.render.samples == 1 ? "" : "s", image.seconds,
             image.threads, image.threads == 1 ? "" : "s");
-        if (!note.empty()) std::printf("note: %s\n", note.c_str());
+        if (!note.empty()) std::fprintf(stream, "note: %s\n", note.c_str());
         return;
     }
     Json json;
@@ -53,7 +55,7 @@ void printSummary(const PlaneCommandOptions& options, const Scene& scene, const 
     json["threads"] = image.threads;
     json["seconds"] = image.seconds;
     json["note"] = note.empty() ? Json() : Json(note);
-    std::printf("%s\n", jsonText(json).c_str());
+    std::fprintf(stream, "%s\n", jsonText(json).c_str());
 }
 
 }  // namespace

@@ -13,14 +13,15 @@ namespace quaternia {
 
 void printRenderSummary(const RenderCommandOptions& options, const Scene& scene,
                         const RenderStats& stats, const Json& extra) {
+    std::FILE* stream = summaryStream({options.output, options.depthOutput});
     double raysPerSecond = stats.seconds > 0 ? stats.rays / stats.seconds : 0;
     if (!options.json) {
-        std::printf(
-            "quaternia: wrote %s (%dx%d, %d sample%s per pixel) in %.2f s, %.3g rays/s, "
-            "%d thread%s\n",
-            options.output.c_str(), scene.render.width, scene.render.height, scene.render.samples,
-            scene.render.samples == 1 ? "" : "s", stats.seconds, raysPerSecond, stats.threads,
-            stats.threads == 1 ? "" : "s");
+        std::fprintf(stream,
+                     "quaternia: wrote %s (%dx%d, %d sample%s per pixel) in %.2f s, %.3g rays/s, "
+                     "%d thread%s\n",
+                     options.output.c_str(), scene.render.width, scene.render.height,
+                     scene.render.samples, scene.render.samples == 1 ? "" : "s", stats.seconds,
+                     raysPerSecond, stats.threads, stats.threads == 1 ? "" : "s");
         return;
     }
     Json json;
@@ -44,7 +45,7 @@ void printRenderSummary(const RenderCommandOptions& options, const Scene& scene,
         stats.laneSlots > 0 ? double(stats.laneIterations) / double(stats.laneSlots) : 0.0;
     json["engine"] = stats.engine;
     json.update(extra);
-    std::printf("%s\n", jsonText(json).c_str());
+    std::fprintf(stream, "%s\n", jsonText(json).c_str());
 }
 
 void addRenderCommand(CLI::App& app, RenderCommandOptions& options) {

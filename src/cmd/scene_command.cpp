@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include <sys/stat.h>
+
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
@@ -121,6 +123,18 @@ const std::atomic<bool>* InterruptScope::flag() const {
 int reportInterrupted() {
     std::fprintf(stderr, "quaternia: interrupted, nothing written\n");
     return 130;
+}
+
+std::FILE* summaryStream(std::initializer_list<std::string_view> outputs) {
+    struct stat out {};
+    if (fstat(fileno(stdout), &out) != 0) return stdout;
+    for (std::string_view output : outputs) {
+        struct stat file {};
+        if (!output.empty() && stat(std::string(output).c_str(), &file) == 0 &&
+            file.st_dev == out.st_dev && file.st_ino == out.st_ino)
+            return stderr;
+    }
+    return stdout;
 }
 
 }  // namespace quaternia

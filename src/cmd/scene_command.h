@@ -5,8 +5,11 @@
 #include <atomic>
 #include <csignal>
 #include <cstdint>
+#include <cstdio>
+#include <initializer_list>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -51,6 +54,11 @@ MemoryBudget memoryBudgetFromOptions(const SceneCommandOptions& options);
 // frames in flight").
 void requireImageMemory(const Scene& scene, uint64_t bytes, const SceneCommandOptions& options,
                         const std::string& what);
+
+// Where a command's summary goes: standard output, unless one of `outputs` is standard output
+// itself (-o /dev/stdout, or a path to the file or pipe that fd 1 is), where the summary would be
+// written into the image; then standard error.
+std::FILE* summaryStream(std::initializer_list<std::string_view> outputs);
 
 // Sets the table key `key` from the short flag `flag` (e.g. --period for cycles.period), naming
 // the flag in an error: "--period: cycles.period = 11 is out of range [1, 10]".

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -57,6 +58,29 @@ void syncDirectory(const std::string& directory) {
     ::close(fd);
 }
 
+// A regular file that is this process's standard input, output or error: the shell opened it
+// (`-o /dev/stdout > out.png`), and a rename would leave the shell's descriptor on the old file
+// (and, through /dev/stdout, replace the system's link with a file).
+bool isStandardStream(const struct stat& file) {
+    for (int fd = 0; fd <= 2; ++fd) {
+        struct stat stream;
+        if (::fstat(fd, &stream) == 0 && stream.st_dev == file.st_dev &&
+            stream.st_ino == file.st_ino)
+            return true;
+    }
+    return false;
+}
+
+// A symbolic link stays one: the temporary goes beside the file it names, and replaces that. A
+// dangling link is replaced itself.
+std::string linkTarget(const std::string& path) {
+    struct stat link;
+    if (::lstat(path.c_str(), &link) != 0 || !S_ISLNK(link.st_mode)) return path;
+    std::unique_ptr<char, decltype(&std::free)> target(::realpath(path.c_str(), nullptr),
+                                                       &std::free);
+    return target ? std::string(target.get()) : path;
+}
+
 }  // namespace
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
@@ -64,14 +88,15 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
     struct stat existing;
     const bool exists = ::stat(path_.c_str(), &existing) == 0;
     if (exists && S_ISDIR(existing.st_mode)) fail(EISDIR);
-    if (exists && !S_ISREG(existing.st_mode)) {
+    if (exists && (!S_ISREG(existing.st_mode) || isStandardStream(existing))) {
         fd_ = ::open(path_.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
         if (fd_ < 0) fail(errno);
         direct_ = true;
         return;
     }
+    renamePath_ = linkTarget(path_);
 
-    std::string name = path_ + ".tmp-XXXXXX";
+    std::string name = renamePath_ + ".tmp-XXXXXX";
     fd_ = ::mkostemp(name.data(), O_CLOEXEC);
     if (fd_ < 0) fail(errno);
     temporaryPath_ = std::move(name);
@@ -84,6 +109,7 @@ AtomicFile::~AtomicFile() {
 
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept
     : path_(std::move(other.path_)),
+      renamePath_(std::move(other.renamePath_)),
       temporaryPath_(std::exchange(other.temporaryPath_, {})),
       fd_(std::exchange(other.fd_, -1)),
       direct_(other.direct_) {}
@@ -92,6 +118,7 @@ AtomicFile& AtomicFile::operator=(AtomicFile&& other) noexcept {
     if (this != &other) {
         discard();
         path_ = std::move(other.path_);
+        renamePath_ = std::move(other.renamePath_);
         temporaryPath_ = std::exchange(other.temporaryPath_, {});
         fd_ = std::exchange(other.fd_, -1);
         direct_ = other.direct_;
@@ -135,9 +162,9 @@ void AtomicFile::commit(bool durable) {
     fd_ = -1;
     if (closed != 0 && errno != EINTR) fail(errno);
     if (direct_) return;
-    if (::rename(temporaryPath_.c_str(), path_.c_str()) != 0) fail(errno);
+    if (::rename(temporaryPath_.c_str(), renamePath_.c_str()) != 0) fail(errno);
     temporaryPath_.clear();
-    if (durable) syncDirectory(directoryOf(path_));
+    if (durable) syncDirectory(directoryOf(renamePath_));
 }
 
 void writeFileAtomically(const std::string& path, const std::vector<uint8_t>& bytes) {

@@ -5,7 +5,9 @@
 //
 // A target that exists and is neither a regular file nor a directory (a device such as
 // /dev/stdout or /dev/null, a named pipe) cannot be replaced by a rename, and must not be: it
-// is opened and written directly, and commit() only closes it.
+// is opened and written directly, and commit() only closes it. So is a regular file that is
+// already this process's standard output (or input or error): `-o /dev/stdout > out.png`. A
+// symbolic link is kept: the file it names is the one replaced.
 #pragma once
 
 #include <cstddef>
@@ -53,7 +55,9 @@ class AtomicFile {
     void discard() noexcept;
     [[noreturn]] void fail(int error) const;
 
-    std::string path_, temporaryPath_;
+    std::string path_;
+    std::string renamePath_;  // path_, or the file a symbolic link path_ names
+    std::string temporaryPath_;
     int fd_ = -1;
     bool direct_ = false;  // a device or pipe, written in place
 };

@@ -1,5 +1,6 @@
 #include "quaternia/util/atomic_file.h"
 
+#include <fcntl.h>
 #include <grp.h>
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -185,6 +186,56 @@ TEST_F(AtomicFileTest, NamedPipeTargetIsWrittenThrough) {
     ASSERT_EQ(::stat(fifo.c_str(), &status), 0);
     EXPECT_TRUE(S_ISFIFO(status.st_mode));
     EXPECT_EQ(listing(), std::vector<std::string>{"pipe"});
+}
+
+TEST_F(AtomicFileTest, StandardStreamFileIsWrittenInPlace) {
+    // `-o /dev/stdout > out.png`, here through standard input so that the test's own output
+    // stays where it is: the file the shell opened is written, /dev/stdin stays a link.
+    const std::string target = path("stream.png");
+    const int saved = ::dup(0);
+    ASSERT_GE(saved, 0);
+    const int fd = ::open(target.c_str(), O_RDWR | O_CREAT | O_TRUNC, 0644);
+    ASSERT_GE(fd, 0);
+    ASSERT_EQ(::dup2(fd, 0), 0);
+    ::close(fd);
+    bool direct = false;
+    try {
+        AtomicFile file("/dev/stdin");
+        direct = file.isDirect();
+        file.write("in place", 8);
+        file.commit();
+    } catch (...) {
+        ::dup2(saved, 0);
+        throw;
+    }
+    ::dup2(saved, 0);
+    ::close(saved);
+    EXPECT_TRUE(direct);
+    EXPECT_EQ(contents(target), "in place");
+    EXPECT_TRUE(fs::is_symlink("/dev/stdin"));
+    EXPECT_EQ(listing(), std::vector<std::string>{"stream.png"});
+}
+
+TEST_F(AtomicFileTest, SymbolicLinkStaysALinkAndItsTargetIsReplaced) {
+    fs::create_directory(path("renders"));
+    const std::string target = path("renders/real.png");
+    std::ofstream(target) << "old";
+    fs::create_symlink("renders/real.png", path("latest.png"));
+    {
+        AtomicFile file(path("latest.png"));
+        EXPECT_EQ(file.temporaryPath().rfind(fs::canonical(target).string() + ".tmp-", 0), 0u)
+            << file.temporaryPath();
+        file.write("new", 3);
+        file.commit();
+    }
+    EXPECT_TRUE(fs::is_symlink(path("latest.png")));
+    EXPECT_EQ(contents(target), "new");
+    EXPECT_EQ(listing(), (std::vector<std::string>{"latest.png", "renders"}));
+    // A dangling link is replaced by the file.
+    fs::create_symlink("renders/missing.png", path("dangling.png"));
+    writeFileAtomically(path("dangling.png"), {'x'});
+    EXPECT_FALSE(fs::is_symlink(path("dangling.png")));
+    EXPECT_EQ(contents(path("dangling.png")), "x");
 }
 
 TEST_F(AtomicFileTest, DirectoryAsTargetFailsAtOnce) {
