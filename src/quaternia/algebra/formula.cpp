@@ -10,17 +10,10 @@
 #include <memory>
 #include <vector>
 
+#include "quaternia/algebra/formula_tree.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
-
-struct FormulaNode {
-    enum class Kind { kConstant, kZ, kC, kSum, kDifference, kProduct, kNegate, kPower };
-    Kind kind = Kind::kConstant;
-    Quaternion value;                                // kConstant
-    int exponent = 0;                                // kPower
-    std::unique_ptr<const FormulaNode> left, right;  // kNegate and kPower use only left
-};
 
 namespace {
 

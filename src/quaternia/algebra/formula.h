@@ -31,7 +31,7 @@ class FormulaError : public std::runtime_error {
     int column_;
 };
 
-struct FormulaNode;  // the parsed expression tree (formula.cpp)
+struct FormulaNode;  // the parsed expression tree (formula_tree.h)
 
 // A parsed formula: cheap to copy, expanded into a Polynomial once c is known.
 class Formula {
@@ -49,6 +49,8 @@ class Formula {
     // True if the name c occurs in the formula.
     bool usesC() const;
     const std::string& text() const { return text_; }
+    // The parsed tree (formula_tree.h); null for a formula without terms.
+    const FormulaNode* root() const { return root_.get(); }
 
   private:
     std::string text_;
