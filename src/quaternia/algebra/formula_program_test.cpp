@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <random>
 
 #include "quaternia/algebra/formula.h"
@@ -115,6 +116,40 @@ TEST(FormulaProgram, PowersGoByRepeatedSquaring) {
     const FormulaProgram one = compiled("z^0");
     EXPECT_EQ(one.instructions().size(), 1u);
     EXPECT_EQ(one.evaluate(Quaternion(0.3, 1, 2, 3)), Quaternion(1));
+}
+
+TEST(FormulaProgram, TangentsAreTheDerivativeOfTheExpansion) {
+    // Dp(z)[h] by the product rule through the program equals the expansion's derivative.
+    const char* formulas[] = {"z^2 + c",
+                              "z^2 + 0.1*z + c",
+                              "(1+0.2i) z (1-0.1k) z + c",
+                              "(z + c)^5",
+                              "z (0.5 - k) z (2 + j) z + c z + c",
+                              "c"};
+    std::mt19937 rng(12);
+    for (const char* text : formulas) {
+        const Quaternion c(-0.2, 0.6, 0.2, 0.2);
+        const FormulaProgram program = compiled(text, c);
+        const Polynomial p = Formula::parse(text).expand(c);
+        for (int n = 0; n < 10; ++n) {
+            const Quaternion z = randomQuaternion(rng, 1.2);
+            const Quaternion h[3] = {randomQuaternion(rng), randomQuaternion(rng),
+                                     randomQuaternion(rng)};
+            std::vector<Quaternion> registers(program.instructions().size());
+            auto tangents = std::make_unique<Quaternion[][3]>(program.instructions().size());
+            Quaternion derivative[3];
+            const Quaternion value = runProgramWithTangents<3>(
+                program.instructions(), program.result(), z, h, Quaternion(),
+                program.constants().data(), program.factors().data(), registers.data(),
+                tangents.get(), derivative);
+            EXPECT_LE(norm(value - p.evaluate(z)), 1e-12 * (1 + norm(value))) << text;
+            for (int m = 0; m < 3; ++m) {
+                const Quaternion expected = p.derivative(z, h[m]);
+                EXPECT_LE(norm(derivative[m] - expected), 1e-11 * (1 + norm(expected)))
+                    << text << " tangent " << m;
+            }
+        }
+    }
 }
 
 TEST(FormulaProgram, RunsOnFloatComponentsToo) {
