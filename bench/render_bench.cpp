@@ -5,6 +5,7 @@
 #include <hwy/targets.h>
 
 #include <random>
+#include <string>
 
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/image/png_io.h"
@@ -45,7 +46,8 @@ BENCHMARK(BM_DistanceEstimate);
 void BM_DistanceEstimateLanes(benchmark::State& state) {
     Scene scene = defaultScene();
     Fractal fractal = Fractal::fromScene(scene);
-    auto lanes = LaneFractal::from(fractal, state.range(0) ? Precision::Double : Precision::Single);
+    const LaneFractal lanes =
+        LaneFractal::from(fractal, state.range(0) ? Precision::Double : Precision::Single);
     std::mt19937 rng(1);
     std::uniform_real_distribution<double> coordinate(-fractal.boundingRadius(),
                                                       fractal.boundingRadius());
@@ -55,7 +57,7 @@ void BM_DistanceEstimateLanes(benchmark::State& state) {
     std::vector<PointEstimate> estimates;
     LaneCounters counters;
     for (auto _ : state) {
-        estimatePoints(*lanes, points, estimates, counters);
+        estimatePoints(lanes, points, estimates, counters);
         benchmark::DoNotOptimize(estimates.data());
     }
     state.SetLabel(laneTargetName());
@@ -104,6 +106,46 @@ BENCHMARK(BM_RenderDefaultScene)
     ->Args({1920, 1080, 1, 0, 0})
     ->Args({1920, 1080, 1, 1, 0})
     ->Args({1920, 1080, 1, 0, 3})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// Issue 17's formulas at 1920x1080, 1 sample, 2 threads, the default scene otherwise: the first
+// argument picks the formula (0 z^2 + c, 1 z^2 + 0.1 z + c, 2 (1+0.2i) z (1-0.1k) z + c, both
+// compiled programs, 3 z^3 + c with c = -0.5 + 0.5i), the second the instruction set (0 the
+// best the CPU has, 1 AVX-512 switched off: what an AVX2 machine runs).
+void BM_RenderFormula(benchmark::State& state) {
+    struct Case {
+        const char* formula;
+        Quaternion c;
+    };
+    const Case cases[] = {{"z^2 + c", defaultScene().fractal.c},
+                          {"z^2 + 0.1*z + c", defaultScene().fractal.c},
+                          {"(1+0.2i) z (1-0.1k) z + c", defaultScene().fractal.c},
+                          {"z^3 + c", Quaternion(-0.5, 0.5, 0, 0)}};
+    const Case& given = cases[state.range(0)];
+    Scene scene = defaultScene();
+    scene.render.width = 1920;
+    scene.render.height = 1080;
+    scene.render.samples = 1;
+    scene.fractal.formula = given.formula;
+    scene.fractal.c = given.c;
+    RenderOptions options;
+    options.threads = 2;
+    if (state.range(1) == 1) hwy::DisableTargets(HWY_AVX3 | HWY_AVX3_DL);
+    RenderStats last;
+    for (auto _ : state)
+        last = render(scene, options).stats;
+    hwy::DisableTargets(0);
+    state.SetLabel(std::string(given.formula) + " " + last.engine);
+    state.counters["lane_utilisation"] =
+        last.laneSlots ? double(last.laneIterations) / double(last.laneSlots) : 0.0;
+    state.counters["rays/s"] =
+        benchmark::Counter(double(last.rays) * state.iterations(), benchmark::Counter::kIsRate);
+    state.counters["steps/ray"] = double(last.marchSteps) / double(last.rays);
+    state.counters["iterations/ray"] = double(last.iterations) / double(last.rays);
+}
+BENCHMARK(BM_RenderFormula)
+    ->ArgsProduct({{0, 1, 2, 3}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -30,7 +30,7 @@ class Compiler {
             case Kind::kC:
                 return constant(c_);
             case Kind::kZ:
-                return emit({Op::kZ});
+                return z();
             case Kind::kSum:
                 return add(node(*n.left), node(*n.right));
             case Kind::kDifference:
@@ -52,6 +52,8 @@ class Compiler {
         return emit({Op::kConstant, -1, -1, int(constants_.size() - 1)});
     }
 
+    int z() { return emit({Op::kZ}); }
+
     std::vector<Instruction> instructions_;
     std::vector<Quaternion> constants_;
     std::vector<double> factors_;
@@ -66,6 +68,7 @@ class Compiler {
         return v && *v == Quaternion(real);
     }
 
+  public:
     int add(int a, int b) {
         if (value(a) && value(b)) return constant(*value(a) + *value(b));
         if (is(a, 0)) return b;
@@ -90,6 +93,8 @@ class Compiler {
         if (a == b) return emit({Op::kSquare, a});
         return emit({Op::kMultiply, a, b});
     }
+
+  private:
     int scale(int a, double factor) {
         if (factor == 0) return constant(Quaternion());
         if (factor == 1) return a;
@@ -100,6 +105,8 @@ class Compiler {
         if (k == factors_.size()) factors_.push_back(factor);
         return emit({Op::kScale, a, -1, int(k)});
     }
+
+  private:
     // x^n by repeated squaring; x^0 = 1, as the expansion has it for 0^0.
     int power(int x, int n) {
         int result = constant(Quaternion(1));
@@ -127,8 +134,41 @@ class Compiler {
 FormulaProgram FormulaProgram::compile(const Formula& formula, const Quaternion& c) {
     Compiler compiler(c);
     const int result = formula.root() ? compiler.node(*formula.root()) : compiler.constant({});
+    return assemble(compiler.instructions_, std::move(compiler.constants_),
+                    std::move(compiler.factors_), result);
+}
+
+FormulaProgram FormulaProgram::fromPolynomial(const Polynomial& polynomial) {
+    Compiler compiler(Quaternion{});
+    int sum = compiler.constant({});
+    for (const Term& term : polynomial.terms()) {
+        // a0 z a1 z ... z ak, left to right. Real coefficients are central: their product
+        // scales the term once at the end, and the z's between them make powers that the terms
+        // share (z z is a squaring, found again by the next term).
+        double factor = 1;
+        int product = -1;  // nothing yet: the product is 1
+        auto times = [&](int r) { product = product < 0 ? r : compiler.multiply(product, r); };
+        for (std::size_t k = 0; k < term.coefficients.size(); ++k) {
+            if (k > 0) times(compiler.z());
+            const Quaternion& a = term.coefficients[k];
+            if (a.x == 0 && a.y == 0 && a.z == 0) {
+                factor *= a.w;
+            } else {
+                times(compiler.constant(a));
+            }
+        }
+        const int one = compiler.constant(Quaternion(1));
+        sum = compiler.add(sum, compiler.multiply(compiler.constant(Quaternion(factor)),
+                                                  product < 0 ? one : product));
+    }
+    return assemble(compiler.instructions_, std::move(compiler.constants_),
+                    std::move(compiler.factors_), sum);
+}
+
+FormulaProgram FormulaProgram::assemble(const std::vector<Instruction>& all,
+                                        std::vector<Quaternion> constants,
+                                        std::vector<double> factors, int result) {
     // Only what the result needs: folding and powers leave instructions nothing reads.
-    const std::vector<Instruction>& all = compiler.instructions_;
     std::vector<bool> live(all.size(), false);
     live[result] = true;
     for (int n = result; n >= 0; --n) {
@@ -146,8 +186,8 @@ FormulaProgram FormulaProgram::compile(const Formula& formula, const Quaternion&
         renumbered[n] = int(program.instructions_.size());
         program.instructions_.push_back(i);
     }
-    program.constants_ = std::move(compiler.constants_);
-    program.factors_ = std::move(compiler.factors_);
+    program.constants_ = std::move(constants);
+    program.factors_ = std::move(factors);
     program.result_ = renumbered[result];
     return program;
 }

@@ -41,6 +41,9 @@ class FormulaProgram {
   public:
     // c is the scene's fractal.c, folded in as a constant.
     static FormulaProgram compile(const Formula& formula, const Quaternion& c);
+    // The same for an expanded polynomial, term by term (a0 z a1 ... z ak, left to right): for
+    // polynomials that come without their formula.
+    static FormulaProgram fromPolynomial(const Polynomial& polynomial);
 
     const std::vector<Instruction>& instructions() const { return instructions_; }
     const std::vector<Quaternion>& constants() const { return constants_; }
@@ -54,109 +57,19 @@ class FormulaProgram {
     Quaternion evaluate(const Quaternion& z) const;
 
   private:
+    // Keeps the instructions that `result` needs, renumbered.
+    static FormulaProgram assemble(const std::vector<Instruction>& all,
+                                   std::vector<Quaternion> constants, std::vector<double> factors,
+                                   int result);
+
     std::vector<Instruction> instructions_;
     std::vector<Quaternion> constants_;
     std::vector<double> factors_;
     int result_ = 0;
 };
 
-// Runs `code` at z with `registers` (at least code.size() of them): `constants` and `factors` are
-// the program's, converted to Element and Real. Returns register `result`.
-template <class Element, class Real>
-Element runProgram(const std::vector<Instruction>& code, int result, const Element& z,
-                   const Element* constants, const Real* factors, Element* registers) {
-    using Op = Instruction::Op;
-    for (std::size_t n = 0; n < code.size(); ++n) {
-        const Instruction& i = code[n];
-        switch (i.op) {
-            case Op::kZ:
-                registers[n] = z;
-                break;
-            case Op::kConstant:
-                registers[n] = constants[i.index];
-                break;
-            case Op::kAdd:
-                registers[n] = registers[i.a] + registers[i.b];
-                break;
-            case Op::kSubtract:
-                registers[n] = registers[i.a] - registers[i.b];
-                break;
-            case Op::kNegate:
-                registers[n] = -registers[i.a];
-                break;
-            case Op::kMultiply:
-                registers[n] = registers[i.a] * registers[i.b];
-                break;
-            case Op::kSquare:
-                registers[n] = square(registers[i.a]);
-                break;
-            case Op::kScale:
-                registers[n] = registers[i.a] * factors[i.index];
-                break;
-        }
-    }
-    return registers[result];
-}
-
-// runProgram with the directional derivatives Dp(z)[h_m] along M tangents h_m, by the product
-// rule in the order written (d(ab) = da b + a db: the factors do not commute), as the analytic
-// normals and the Jacobians of orbits need them. `tangentRegisters` holds M per register;
-// `zero` is the element 0 (lane vectors have no default value).
-template <int M, class Element, class Real>
-Element runProgramWithTangents(const std::vector<Instruction>& code, int result, const Element& z,
-                               const Element (&h)[M], const Element& zero, const Element* constants,
-                               const Real* factors, Element* registers,
-                               Element (*tangentRegisters)[M], Element (&derivative)[M]) {
-    using Op = Instruction::Op;
-    for (std::size_t n = 0; n < code.size(); ++n) {
-        const Instruction& i = code[n];
-        Element(&t)[M] = tangentRegisters[n];
-        switch (i.op) {
-            case Op::kZ:
-                registers[n] = z;
-                for (int m = 0; m < M; ++m)
-                    t[m] = h[m];
-                break;
-            case Op::kConstant:
-                registers[n] = constants[i.index];
-                for (int m = 0; m < M; ++m)
-                    t[m] = zero;
-                break;
-            case Op::kAdd:
-                registers[n] = registers[i.a] + registers[i.b];
-                for (int m = 0; m < M; ++m)
-                    t[m] = tangentRegisters[i.a][m] + tangentRegisters[i.b][m];
-                break;
-            case Op::kSubtract:
-                registers[n] = registers[i.a] - registers[i.b];
-                for (int m = 0; m < M; ++m)
-                    t[m] = tangentRegisters[i.a][m] - tangentRegisters[i.b][m];
-                break;
-            case Op::kNegate:
-                registers[n] = -registers[i.a];
-                for (int m = 0; m < M; ++m)
-                    t[m] = -tangentRegisters[i.a][m];
-                break;
-            case Op::kMultiply:
-            case Op::kSquare: {
-                const int b = i.op == Op::kSquare ? i.a : i.b;
-                registers[n] =
-                    i.op == Op::kSquare ? square(registers[i.a]) : registers[i.a] * registers[b];
-                for (int m = 0; m < M; ++m)
-                    t[m] = tangentRegisters[i.a][m] * registers[b] +
-                           registers[i.a] * tangentRegisters[b][m];
-                break;
-            }
-            case Op::kScale:
-                registers[n] = registers[i.a] * factors[i.index];
-                for (int m = 0; m < M; ++m)
-                    t[m] = tangentRegisters[i.a][m] * factors[i.index];
-                break;
-        }
-    }
-    for (int m = 0; m < M; ++m)
-        derivative[m] = tangentRegisters[result][m];
-    return registers[result];
-}
+// runProgram and runProgramWithTangents for real components (the lane code includes the file
+// again in each SIMD target's namespace, as quaternion.h's arithmetic).
+#include "quaternia/algebra/formula_program_run-inl.h"  // IWYU pragma: export
 
 }  // namespace quaternia

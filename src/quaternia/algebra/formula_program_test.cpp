@@ -57,14 +57,36 @@ TEST(FormulaProgram, AgreesWithTheExpandedPolynomial) {
         const FormulaProgram program = compiled(text, c);
         expectWellFormed(program);
         const Polynomial p = Formula::parse(text).expand(c);
+        // The program of the expansion itself, term by term, is the same polynomial too.
+        const FormulaProgram termByTerm = FormulaProgram::fromPolynomial(p);
+        expectWellFormed(termByTerm);
         for (int n = 0; n < 20; ++n) {
             const Quaternion z = randomQuaternion(rng, 1.2);
             const Quaternion expected = p.evaluate(z);
-            const Quaternion actual = program.evaluate(z);
             const double scale = 1 + norm(expected) + std::pow(2.0 * (1 + norm(z)), 8);
-            EXPECT_LE(norm(actual - expected), 1e-13 * scale) << text << " at " << z;
+            EXPECT_LE(norm(program.evaluate(z) - expected), 1e-13 * scale) << text << " at " << z;
+            EXPECT_LE(norm(termByTerm.evaluate(z) - expected), 1e-13 * scale)
+                << text << " at " << z;
         }
     }
+}
+
+TEST(FormulaProgram, TermByTermSharesPowersAndScalesByRealCoefficients) {
+    // 0.5 z^3 + 0.1 z + c: z^2 and z^3 once, two scalings, no quaternion product by a real.
+    const Quaternion c(-0.2, 0.6, 0.2, 0.2);
+    const FormulaProgram p =
+        FormulaProgram::fromPolynomial(Formula::parse("0.5 z^3 + 0.1 z + c").expand(c));
+    EXPECT_EQ(p.count(Op::kSquare), 1);
+    EXPECT_EQ(p.count(Op::kMultiply), 1);
+    EXPECT_EQ(p.count(Op::kScale), 2);
+    EXPECT_EQ(p.count(Op::kAdd), 2);
+    // A two-sided term keeps its quaternion coefficients as products.
+    const FormulaProgram twoSided =
+        FormulaProgram::fromPolynomial(Formula::parse("(1+0.2i) z (1-0.1k) z + c").expand(c));
+    EXPECT_EQ(twoSided.count(Op::kMultiply), 3);
+    // The zero polynomial is the constant 0.
+    const FormulaProgram zero = FormulaProgram::fromPolynomial(Polynomial{});
+    EXPECT_EQ(zero.evaluate(Quaternion(1, 2, 3, 4)), Quaternion{});
 }
 
 TEST(FormulaProgram, ZSquaredPlusCIsOneSquaringAndOneSum) {
@@ -136,12 +158,12 @@ TEST(FormulaProgram, TangentsAreTheDerivativeOfTheExpansion) {
             const Quaternion h[3] = {randomQuaternion(rng), randomQuaternion(rng),
                                      randomQuaternion(rng)};
             std::vector<Quaternion> registers(program.instructions().size());
-            auto tangents = std::make_unique<Quaternion[][3]>(program.instructions().size());
+            std::vector<Quaternion> tangents(3 * program.instructions().size());
             Quaternion derivative[3];
             const Quaternion value = runProgramWithTangents<3>(
                 program.instructions(), program.result(), z, h, Quaternion(),
                 program.constants().data(), program.factors().data(), registers.data(),
-                tangents.get(), derivative);
+                tangents.data(), derivative);
             EXPECT_LE(norm(value - p.evaluate(z)), 1e-12 * (1 + norm(value))) << text;
             for (int m = 0; m < 3; ++m) {
                 const Quaternion expected = p.derivative(z, h[m]);

@@ -458,6 +458,15 @@ double Polynomial::derivativeNormBound(double r) const {
     return bound;
 }
 
+std::vector<double> Polynomial::derivativeNormBoundCoefficients() const {
+    std::vector<double> coefficients(std::size_t(std::max(1, degree())), 0.0);
+    for (const Term& term : terms_) {
+        const int d = term.degree();
+        if (d > 0) coefficients[std::size_t(d - 1)] += d * normProduct(term);
+    }
+    return coefficients;
+}
+
 std::optional<PowerForm> Polynomial::powerForm() const {
     std::optional<PowerForm> form;
     for (const Term& term : terms_) {

@@ -41,6 +41,9 @@ class Polynomial {
     // P'(r) where P(r) = sum over terms of (product of coefficient norms) r^degree: an upper
     // bound on the operator norm of the derivative at any z with |z| = r.
     double derivativeNormBound(double r) const;
+    // P'(r)'s coefficients, lowest degree first: entry k multiplies r^k (the SIMD lanes evaluate
+    // the bound by Horner's rule from them).
+    std::vector<double> derivativeNormBoundCoefficients() const;
 
     // The polynomial as s z^d + c when it has that form (all coefficients of its one non-constant
     // term real), else nullopt.

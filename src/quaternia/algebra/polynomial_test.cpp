@@ -79,6 +79,28 @@ TEST(Polynomial, DerivativeNormBoundDominatesDerivative) {
     EXPECT_DOUBLE_EQ(norm(square.derivative(Quaternion{0, 1.5, 0, 0}, kI)), 3);
 }
 
+TEST(Polynomial, DerivativeNormBoundCoefficientsGiveTheBound) {
+    std::mt19937 rng(6);
+    for (const char* text : kFormulas) {
+        const Polynomial p = compileFormula(text, randomQuaternion(rng, 0.7));
+        const std::vector<double> b = p.derivativeNormBoundCoefficients();
+        EXPECT_EQ(int(b.size()), std::max(1, p.degree())) << text;
+        for (double r : {0.0, 0.3, 1.0, 2.5}) {
+            double horner = 0;
+            for (auto k = b.rbegin(); k != b.rend(); ++k)
+                horner = horner * r + *k;
+            EXPECT_NEAR(horner, p.derivativeNormBound(r), 1e-12 * (1 + horner)) << text;
+        }
+    }
+    // z^3 + 0.5 (1 + j) z: P(r) = r^3 + 0.5 sqrt(2) r, P'(r) = 3 r^2 + 0.5 sqrt(2).
+    const std::vector<double> b =
+        compileFormula("z^3 + 0.5*(1 + j)*z", Quaternion{}).derivativeNormBoundCoefficients();
+    ASSERT_EQ(b.size(), 3u);
+    EXPECT_DOUBLE_EQ(b[0], 0.5 * std::sqrt(2.0));
+    EXPECT_EQ(b[1], 0);
+    EXPECT_EQ(b[2], 3);
+}
+
 TEST(Polynomial, DetectsPowerForm) {
     const Quaternion c{-0.2, 0.6, 0.2, 0.2};
     const auto quadratic = compileFormula("z^2 + c", c).powerForm();

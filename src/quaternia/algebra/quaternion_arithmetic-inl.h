@@ -18,7 +18,13 @@ constexpr QuaternionT<T> operator-(const QuaternionT<T>& a, const QuaternionT<T>
 }
 template <QuaternionComponent T>
 constexpr QuaternionT<T> operator-(const QuaternionT<T>& a) {
-    return {-a.w, -a.x, -a.y, -a.z};
+    if constexpr (std::is_arithmetic_v<T>) {
+        return {-a.w, -a.x, -a.y, -a.z};
+    } else {
+        // Lane vectors have no unary minus; 0 - x differs from -x only in the sign of a zero.
+        const T zero{};
+        return {zero - a.w, zero - a.x, zero - a.y, zero - a.z};
+    }
 }
 template <QuaternionComponent T>
 constexpr QuaternionT<T> operator*(const QuaternionT<T>& a, const T& s) {

@@ -123,8 +123,12 @@ double smoothEscapeCount(int n, double radiusSquared, int degree) {
     return n + 1 - std::log(std::max(1e-12, 0.5 * std::log(radiusSquared))) / std::log(d);
 }
 
-JuliaSet::JuliaSet(Polynomial polynomial, int maxIterations, double bailout)
+JuliaSet::JuliaSet(Polynomial polynomial, int maxIterations, double bailout,
+                   std::shared_ptr<const FormulaProgram> program)
     : polynomial_(std::move(polynomial)),
+      program_(program ? std::move(program)
+                       : std::make_shared<const FormulaProgram>(
+                             FormulaProgram::fromPolynomial(polynomial_))),
       power_(polynomial_.powerForm()),
       maxIterations_(maxIterations),
       escapeRadius_(polynomial_.escapeRadius()),

@@ -21,8 +21,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <optional>
 
+#include "quaternia/algebra/formula_program.h"
 #include "quaternia/algebra/polynomial.h"
 #include "quaternia/algebra/quaternion.h"
 
@@ -64,7 +66,10 @@ class JuliaSet {
   public:
     // bailout 0 selects the polynomial's certified escape radius; a positive bailout must exceed
     // 1 so that ln|z| > 0 at escape. Throws UserError naming fractal.formula or fractal.bailout.
-    JuliaSet(Polynomial polynomial, int maxIterations, double bailout);
+    // `program` computes the same polynomial for the SIMD lanes (from the formula as written);
+    // without one, it is compiled from the expansion term by term.
+    JuliaSet(Polynomial polynomial, int maxIterations, double bailout,
+             std::shared_ptr<const FormulaProgram> program = nullptr);
 
     DistanceEstimate estimate(const Quaternion& z0) const;
     bool contains(const Quaternion& z0) const;
@@ -81,6 +86,7 @@ class JuliaSet {
     int gradientIterations(const Quaternion& z0) const;
 
     const Polynomial& polynomial() const { return polynomial_; }
+    const FormulaProgram& program() const { return *program_; }
     int maxIterations() const { return maxIterations_; }
     double escapeRadius() const { return escapeRadius_; }  // certified: |z| > R escapes
     double bailout() const { return bailout_; }            // membership radius
@@ -90,6 +96,7 @@ class JuliaSet {
     Quaternion derivative(const Quaternion& z, const Quaternion& h) const;  // Dp(z)[h]
 
     Polynomial polynomial_;
+    std::shared_ptr<const FormulaProgram> program_;
     std::optional<PowerForm> power_;
     int maxIterations_;
     double escapeRadius_;

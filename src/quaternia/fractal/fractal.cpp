@@ -6,9 +6,12 @@ namespace quaternia {
 
 Fractal Fractal::fromScene(const Scene& scene) {
     Polynomial polynomial = compileFormula(scene.fractal.formula, scene.fractal.c);
-    return Fractal(
-        JuliaSet(std::move(polynomial), scene.fractal.maxIterations, scene.fractal.bailout),
-        Slice(scene.slice));
+    // The lanes' program from the formula as written (parsed again: it parsed above).
+    auto program = std::make_shared<const FormulaProgram>(
+        FormulaProgram::compile(Formula::parse(scene.fractal.formula), scene.fractal.c));
+    return Fractal(JuliaSet(std::move(polynomial), scene.fractal.maxIterations,
+                            scene.fractal.bailout, std::move(program)),
+                   Slice(scene.slice));
 }
 
 DistanceEstimate Fractal::estimate(const Point3d& p) const {

@@ -52,6 +52,57 @@ INSTANTIATE_TEST_SUITE_P(ReferenceCases, LaneSilhouette,
                          ::testing::Values("case01_sqr_A", "case03_sqr_C", "case05_sqr_E",
                                            "case06_sqr_A_tilt", "case08_cube_F"));
 
+// Formulas that are not s z^d + c run in the lanes as compiled programs (formula_program.h):
+// ten of degrees 2 to 5, with real, one-sided and two-sided quaternion coefficients and several
+// top-degree terms, each against the scalar reference, which iterates the expanded polynomial.
+struct ProgramCase {
+    const char* formula;
+    Quaternion c;
+};
+class ProgramSilhouette : public ::testing::TestWithParam<ProgramCase> {};
+
+TEST_P(ProgramSilhouette, MatchesTheScalarReferenceMarcher) {
+    const ProgramCase& given = GetParam();
+    auto scene = [&](RenderEngine engine, Precision precision) {
+        Scene s = silhouetteScene("case01_sqr_A", engine, precision);
+        s.render.width = 320;
+        s.render.height = 240;
+        s.fractal.formula = given.formula;
+        s.fractal.c = given.c;
+        return s;
+    };
+    const RenderResult reference = render(scene(RenderEngine::Scalar, Precision::Double));
+    const Mask referenceMask = maskFromAlpha(reference.image);
+    // A set that is not empty in view, nor the whole view.
+    EXPECT_GT(reference.stats.hits, 320 * 240 / 50) << given.formula;
+    EXPECT_LT(reference.stats.hits, 320 * 240 * 9 / 10) << given.formula;
+    for (Precision precision : {Precision::Single, Precision::Double}) {
+        const RenderResult lanes = render(scene(RenderEngine::Simd, precision));
+        EXPECT_STREQ(lanes.stats.engine, laneTargetName());
+        const MaskComparison comparison =
+            testing::compareNonEmptyMasks(maskFromAlpha(lanes.image), referenceMask, given.formula);
+        EXPECT_GE(comparison.iou, 0.999) << given.formula << " " << describe(comparison);
+        // No pixel more than one pixel away from the other silhouette.
+        EXPECT_EQ(comparison.farFromA + comparison.farFromB, 0) << given.formula;
+        std::printf("%s %s: %s\n", given.formula,
+                    precision == Precision::Single ? "single" : "double",
+                    describe(comparison).c_str());
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    TenFormulas, ProgramSilhouette,
+    ::testing::Values(ProgramCase{"z^2 + 0.1*z + c", {-0.2, 0.6, 0.2, 0.2}},
+                      ProgramCase{"(1+0.2i) z (1-0.1k) z + c", {-0.2, 0.6, 0.2, 0.2}},
+                      ProgramCase{"z^2 + (0.1+0.2j)*z + c", {-0.2, 0.6, 0.2, 0.2}},
+                      ProgramCase{"i*z*j*z + 0.3*z + c", {0.1, 0.1, 0, 0.05}},
+                      ProgramCase{"z^3 + 0.2*z^2 + c", {-0.5, 0.5, 0, 0}},
+                      ProgramCase{"z (0.9+0.3j) z z + c", {-0.5, 0.5, 0.1, 0}},
+                      ProgramCase{"(z + 0.1i)^3 - 0.1*z + c", {-0.4, 0.5, 0, 0.1}},
+                      ProgramCase{"z^4 - 0.3*z + c", {-0.6, 0.2, 0.1, 0}},
+                      ProgramCase{"z^2 (1+0.1k) z^2 + 0.5*z^4 + c", {-0.5, 0.3, 0, 0}},
+                      ProgramCase{"z^5 + 0.1*z^2 + c", {-0.6, 0.4, 0, 0}}));
+
 // Fully shaded (soft shadows, occlusion, orbit-trap colour): the same picture. Not pixel for
 // pixel: the cones start each ray elsewhere than the scalar marcher does, so each lands at
 // another point within a fraction of a footprint of the surface, and the normal of a fractal
@@ -100,10 +151,9 @@ TEST(LaneRender, ShadowCylindersChangeNoPixel) {
         const Shader shader(scene.shading, fractal);
         const MarchSettings march{MarchMethod::SphereTracing, 0, scene.render.epsilon,
                                   camera.pixelFootprint(1.0), scene.render.maxSteps};
-        const auto lanes = LaneFractal::from(fractal, Precision::Single);
-        ASSERT_TRUE(lanes);
-        LaneTileRenderer plain(*lanes, camera, shader, march, 1, false);
-        LaneTileRenderer clipped(*lanes, camera, shader, march, 1, true);
+        const LaneFractal lanes = LaneFractal::from(fractal, Precision::Single);
+        LaneTileRenderer plain(lanes, camera, shader, march, 1, false);
+        LaneTileRenderer clipped(lanes, camera, shader, march, 1, true);
         int64_t plainEstimates = 0, clippedEstimates = 0;
         int hits = 0, changed = 0;
         for (int y0 = 0; y0 < 240; y0 += 32) {
@@ -144,12 +194,11 @@ TEST(LaneRender, TileSizeChangesNoPixel) {
     const Shader shader(scene.shading, fractal);
     const MarchSettings march{MarchMethod::SphereTracing, 0, scene.render.epsilon,
                               camera.pixelFootprint(1.0), scene.render.maxSteps};
-    const auto lanes = LaneFractal::from(fractal, Precision::Single);
-    ASSERT_TRUE(lanes);
+    const LaneFractal lanes = LaneFractal::from(fractal, Precision::Single);
     // Adaptive sampling too: its decisions take the first samples of a border about the tile.
     for (int samples : {1, 16}) {
         auto renderInTiles = [&](int size) {
-            LaneTileRenderer renderer(*lanes, camera, shader, march, samples, true, true);
+            LaneTileRenderer renderer(lanes, camera, shader, march, samples, true, true);
             std::vector<PixelSamples> image(size_t(width * height)), tilePixels;
             for (int y0 = 0; y0 < height; y0 += size) {
                 for (int x0 = 0; x0 < width; x0 += size) {
@@ -190,12 +239,12 @@ TEST(LaneRender, TileSizeChangesNoPixel) {
 }
 
 // Formulas that are not s z^d + c, and the fixed-step marcher, take the scalar path.
-TEST(LaneRender, OtherFormulasAndFixedStepUseTheScalarPath) {
+TEST(LaneRender, EveryFormulaTakesTheLanesAndFixedStepTheScalarPath) {
     Scene scene = testing::referenceScene("case01_sqr_A");
     scene.render.width = 16;
     scene.render.height = 12;
     scene.fractal.formula = "i*z*j*z + c";
-    EXPECT_STREQ(render(scene).stats.engine, "scalar");
+    EXPECT_STREQ(render(scene).stats.engine, laneTargetName());
     scene.fractal.formula = "z^2 + c";
     scene.render.method = MarchMethod::FixedStep;
     EXPECT_STREQ(render(scene).stats.engine, "scalar");

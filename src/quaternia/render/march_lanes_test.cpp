@@ -38,15 +38,14 @@ PointBatch randomPoints(int count, double radius, unsigned seed) {
 
 TEST(LaneFractal, AffineMapEqualsTheSlice) {
     Fractal fractal = tiltedFractal();
-    auto lanes = LaneFractal::from(fractal, Precision::Double);
-    ASSERT_TRUE(lanes);
+    const LaneFractal lanes = LaneFractal::from(fractal, Precision::Double);
     PointBatch points = randomPoints(50, 2, 1);
     for (size_t i = 0; i < points.size(); ++i) {
         Point3d p(points.x[i], points.y[i], points.z[i]);
         Quaternion q = fractal.slice().quaternionFromWorld(p);
         for (int c = 0; c < 4; ++c) {
-            double mapped = lanes->origin[c] + p.x * lanes->axes[0][c] + p.y * lanes->axes[1][c] +
-                            p.z * lanes->axes[2][c];
+            double mapped = lanes.origin[c] + p.x * lanes.axes[0][c] + p.y * lanes.axes[1][c] +
+                            p.z * lanes.axes[2][c];
             EXPECT_NEAR(mapped, q[c], 1e-12);
         }
     }
@@ -56,7 +55,7 @@ TEST(LaneFractal, ComplexConstantViewKeepsEveryOrbitRadius) {
     // docs/facts.md, Symmetries: conjugation by a unit quaternion is an automorphism, so the
     // rotated slice with the complex c' = Re c + |Im c| i has orbits of the same radii.
     Fractal fractal = tiltedFractal();
-    const LaneFractal given = *LaneFractal::from(fractal, Precision::Double);
+    const LaneFractal given = LaneFractal::from(fractal, Precision::Double);
     const LaneFractal rotated = given.withComplexConstant();
     const double imaginary = std::hypot(given.c[1], given.c[2], given.c[3]);
     ASSERT_GT(imaginary, 0.1);
@@ -88,13 +87,23 @@ TEST(LaneFractal, ComplexConstantViewKeepsEveryOrbitRadius) {
     EXPECT_EQ(real.withComplexConstant().axes, real.axes);
 }
 
-TEST(LaneFractal, OnlyPowerFormsTakeTheLanes) {
+TEST(LaneFractal, PowerFormsTakeTheirLoopsAndEveryOtherFormulaItsProgram) {
     Scene scene = testing::referenceScene("case01_sqr_A");
-    EXPECT_TRUE(LaneFractal::from(Fractal::fromScene(scene), Precision::Single));
+    EXPECT_FALSE(LaneFractal::from(Fractal::fromScene(scene), Precision::Single).program);
     scene.fractal.formula = "z^3 + c";
-    EXPECT_TRUE(LaneFractal::from(Fractal::fromScene(scene), Precision::Single));
-    scene.fractal.formula = "i*z*j*z + c";
-    EXPECT_FALSE(LaneFractal::from(Fractal::fromScene(scene), Precision::Single));
+    const LaneFractal cubic = LaneFractal::from(Fractal::fromScene(scene), Precision::Single);
+    EXPECT_FALSE(cubic.program);
+    EXPECT_EQ(cubic.degree, 3);
+    scene.fractal.formula = "i*z*j*z + 0.5*z + c";
+    const LaneFractal general = LaneFractal::from(Fractal::fromScene(scene), Precision::Single);
+    ASSERT_TRUE(general.program);
+    EXPECT_EQ(general.degree, 2);
+    // P(r) = r^2 + 0.5 r: P'(r) = 2 r + 0.5.
+    EXPECT_EQ(general.derivativeBound, (std::vector<double>{0.5, 2}));
+    // Its program computes the polynomial.
+    const Quaternion z(0.3, -0.2, 0.5, 0.1);
+    const Fractal fractal = Fractal::fromScene(scene);
+    EXPECT_LT(norm(general.program->evaluate(z) - fractal.set().polynomial().evaluate(z)), 1e-15);
 }
 
 // Double lanes compute what JuliaSet::estimate computes; float lanes agree on membership except
@@ -102,11 +111,10 @@ TEST(LaneFractal, OnlyPowerFormsTakeTheLanes) {
 void expectEstimatesMatch(const Fractal& fractal, unsigned seed) {
     PointBatch points = randomPoints(3000, 1.6, seed);
     for (Precision precision : {Precision::Double, Precision::Single}) {
-        auto lanes = LaneFractal::from(fractal, precision);
-        ASSERT_TRUE(lanes);
+        const LaneFractal lanes = LaneFractal::from(fractal, precision);
         std::vector<PointEstimate> estimates;
         LaneCounters counters;
-        estimatePoints(*lanes, points, estimates, counters);
+        estimatePoints(lanes, points, estimates, counters);
         ASSERT_EQ(estimates.size(), points.size());
         EXPECT_EQ(counters.estimates, int64_t(points.size()));
         int membershipMismatches = 0, insideCount = 0;
@@ -150,13 +158,12 @@ TEST(MarchLanes, DistancesAloneEqualTheFullEstimates) {
         const Fractal fractal = Fractal::fromScene(scene);
         const PointBatch points = randomPoints(2000, 1.6, 12);
         for (Precision precision : {Precision::Double, Precision::Single}) {
-            auto lanes = LaneFractal::from(fractal, precision);
-            ASSERT_TRUE(lanes);
+            const LaneFractal lanes = LaneFractal::from(fractal, precision);
             std::vector<PointEstimate> estimates;
             std::vector<double> distances;
             LaneCounters full, alone;
-            estimatePoints(*lanes, points, estimates, full);
-            estimateDistances(*lanes, points, distances, alone);
+            estimatePoints(lanes, points, estimates, full);
+            estimateDistances(lanes, points, distances, alone);
             ASSERT_EQ(distances.size(), points.size());
             EXPECT_EQ(alone.estimates, full.estimates);
             int inside = 0;
@@ -194,7 +201,7 @@ TEST(MarchLanes, NormalsMatchTheAnalyticNormal) {
         for (Precision precision : {Precision::Double, Precision::Single}) {
             std::vector<Vector3d> normals;
             LaneCounters counters;
-            potentialNormals(*LaneFractal::from(fractal, precision), nearSet, iterations, normals,
+            potentialNormals(LaneFractal::from(fractal, precision), nearSet, iterations, normals,
                              counters);
             int poor = 0;
             for (size_t i = 0; i < nearSet.size(); ++i) {
@@ -233,21 +240,20 @@ TEST(MarchLanes, NormalsAloneEqualTheNormalsOfTheEstimates) {
         }
         ASSERT_GT(points.size(), 700u);
         for (Precision precision : {Precision::Double, Precision::Single}) {
-            const auto lanes = LaneFractal::from(fractal, precision);
-            ASSERT_TRUE(lanes);
+            const LaneFractal lanes = LaneFractal::from(fractal, precision);
             std::vector<PointEstimate> estimates;
             LaneCounters counters;
-            estimatePoints(*lanes, points, estimates, counters);
+            estimatePoints(lanes, points, estimates, counters);
             std::vector<int> iterations;
             int inside = 0;
             for (const PointEstimate& e : estimates) {
-                iterations.push_back(gradientIterationsOf(e, lanes->maxIterations));
+                iterations.push_back(gradientIterationsOf(e, lanes.maxIterations));
                 inside += e.inside;
             }
             EXPECT_GT(inside, 20);
             std::vector<Vector3d> fromEstimates, alone;
-            potentialNormals(*lanes, points, iterations, fromEstimates, counters);
-            potentialNormalsAlone(*lanes, points, alone, counters);
+            potentialNormals(lanes, points, iterations, fromEstimates, counters);
+            potentialNormalsAlone(lanes, points, alone, counters);
             ASSERT_EQ(alone.size(), points.size());
             for (size_t i = 0; i < points.size(); ++i) {
                 ASSERT_EQ(alone[i].x, fromEstimates[i].x) << "point " << i;
@@ -279,7 +285,7 @@ TEST(MarchLanes, CameraRaysEndWhereSphereTracingEnds) {
     std::vector<TraceResult> results;
     LaneCounters counters;
     traceCameraRays(
-        *LaneFractal::from(fractal, Precision::Double),
+        LaneFractal::from(fractal, Precision::Double),
         CameraMarch{settings.epsilon, settings.pixelAngle, settings.maxSteps, settings.relaxation},
         rays, results, counters);
     int hits = 0;
@@ -302,7 +308,7 @@ TEST(MarchLanes, CameraRaysEndWhereSphereTracingEnds) {
 // portable fallback) computes the same estimates: the runtime dispatch cannot pick a broken one.
 TEST(MarchLanes, EveryCompiledTargetAgrees) {
     Fractal fractal = Fractal::fromScene(testing::referenceScene("case01_sqr_A"));
-    auto lanes = LaneFractal::from(fractal, Precision::Double);
+    const LaneFractal lanes = LaneFractal::from(fractal, Precision::Double);
     PointBatch points = randomPoints(500, 1.6, 6);
     std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
     EXPECT_GE(targets.size(), 2u);
@@ -311,7 +317,7 @@ TEST(MarchLanes, EveryCompiledTargetAgrees) {
         EXPECT_EQ(std::string(laneTargetName()), hwy::TargetName(target));
         std::vector<PointEstimate> estimates;
         LaneCounters counters;
-        estimatePoints(*lanes, points, estimates, counters);
+        estimatePoints(lanes, points, estimates, counters);
         for (size_t i = 0; i < points.size(); ++i) {
             DistanceEstimate reference =
                 fractal.estimate(Point3d(points.x[i], points.y[i], points.z[i]));

@@ -30,17 +30,19 @@ struct LaneConstants {
     bool certified;  // bailout >= the certified escape radius: every escape is final
     // Estimates take estimateThreeNumbers: float lanes, z^2 + c, a certified bailout.
     bool threeNumbers;
+    // The general form: the polynomial's program (false for s z^d + c).
+    ProgramLanes<D> program;
 
     // Float lanes take the fractal through LaneFractal::withComplexConstant, which changes no
     // estimate, membership or gradient product: their quadratic loop then needs c = c.w + c.x i.
     // Double lanes keep the slice as given, to round as the scalar reference does.
-    LaneConstants(D d, const LaneFractal& given) {
+    LaneConstants(D d, const LaneFractal& given) : program(d, given) {
         using T = hn::TFromD<D>;
         const LaneFractal f = sizeof(T) == 4 ? given.withComplexConstant() : given;
         degree = f.degree;
         maxIterationCount = f.maxIterations;
         certified = f.bailoutSquared >= f.escapeRadiusSquared;
-        threeNumbers = sizeof(T) == 4 && f.degree == 2 && certified;
+        threeNumbers = sizeof(T) == 4 && f.degree == 2 && !f.program && certified;
         auto lanes = [&](const std::array<double, 4>& q, double factor = 1) {
             return QuaternionT<V>{hn::Set(d, T(factor * q[0])), hn::Set(d, T(factor * q[1])),
                                   hn::Set(d, T(factor * q[2])), hn::Set(d, T(factor * q[3]))};
@@ -131,9 +133,9 @@ HWY_INLINE V fastLogLanes(D d, V x) {
 // ln |z|^2, with its step scale; an overflowed |z'|^2 gives 0, which is right: the distance is
 // then far below any step. Double lanes compute it as JuliaSet::estimate does. Float lanes, whose
 // estimate is only good to a few percent anyway (the continuation stops at |z| = 100), take
-// sqrt(a / b) = a / sqrt(a b) from the reciprocal square root estimate (relative error below
-// 4e-4 on every target) and the logarithm from fastLogLanes: a division, a square root and a
-// longer logarithm less per estimate. (A margin of 1/512 below the exact value, tried to keep
+// sqrt(a / b) = a / (sqrt(a) sqrt(b)) from reciprocal square root estimates (relative error
+// below 4e-4 each on every target) and the logarithm from fastLogLanes: a division, a square root
+// and a longer logarithm less per estimate. (A margin of 1/512 below the exact value, tried to keep
 // the rounding one-sided, moved the lanes' ambient occlusion and soft shadows visibly away from
 // the scalar path's: LaneRender.ShadedImageMatchesTheScalarPath.)
 template <class D, class V = hn::Vec<D>>
@@ -141,7 +143,10 @@ HWY_INLINE V closingDistance(D d, V radiusSquared, V derivativeSquared, V stepSc
     using T = hn::TFromD<D>;
     V distance;
     if constexpr (sizeof(T) == 4) {
-        const V root = hn::ApproximateReciprocalSqrt(radiusSquared * derivativeSquared);
+        // Two estimates rather than one of the product, which overflows floats at high degrees
+        // (|z|^2 near 1e20 after the last step of z^5, |z'|^2 beyond 1e18).
+        const V root = hn::ApproximateReciprocalSqrt(radiusSquared) *
+                       hn::ApproximateReciprocalSqrt(derivativeSquared);
         distance = hn::Set(d, T(0.25)) * radiusSquared * root * fastLogLanes(d, radiusSquared);
     } else {
         distance = hn::Set(d, T(0.25)) * hn::Sqrt(radiusSquared / derivativeSquared) *
@@ -223,7 +228,7 @@ struct EstimateGroup {
     }
 
     // The next iterate z <- s z^d + c, with |z'|^2 <- s^2 d^2 |z|^(2 (d - 1)) |z'|^2 from the
-    // |z|^2 before it.
+    // |z|^2 before it. (Programs step all groups at once: estimateLanes.)
     template <bool kQuadratic>
     HWY_INLINE void iterate(const LaneConstants<D>& k, QuaternionT<V>& z) {
         if constexpr (kQuadratic) {
@@ -321,8 +326,17 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionT<hn::Ve
         allDone = true;
         if (!certified) iteration = iteration + one;
         const bool last = n + 1 >= k.maxIterationCount;  // z_0 .. z_{N-1} tested
+        const bool program = !kQuadratic && k.program;
+        if (program) {
+            // |z'|^2 <- P'(|z|)^2 |z'|^2, the bound the scalar reference carries, then z <- p(z).
+            for (size_t j = 0; j < K; ++j)
+                g[j].derivativeSquared = g[j].derivativeSquared * k.program.gainSquared(g[j].r2);
+            k.program.step(z);
+            for (size_t j = 0; j < K; ++j)
+                g[j].r2 = normSquaredPairwise(z[j]);
+        }
         for (size_t j = 0; j < K; ++j) {
-            g[j].template iterate<kQuadratic>(k, z[j]);
+            if (!program) g[j].template iterate<kQuadratic>(k, z[j]);
             const bool groupDone =
                 certified
                     ? settleCertified(d, g[j].r2, g[j].derivativeSquared, k.estimateRadiusSquared,

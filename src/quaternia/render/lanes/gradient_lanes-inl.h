@@ -144,8 +144,8 @@ HWY_INLINE void threeNumberGradientToItsCount(D d, const LaneConstants<D>& k, V 
     tangents.gradient(gx, gy, gz);
 }
 
-// potentialNormalLanes' gradient in quaternions, for any s z^d + c in float or double: the
-// three tangents of the slice carried through the Jacobian of p at each iterate (the chain
+// potentialNormalLanes' gradient in quaternions, for any s z^d + c or program in float or double:
+// the three tangents of the slice carried through the Jacobian of p at each iterate (the chain
 // rule), and their inner products with z_M.
 template <bool kQuadratic, class D, class V = hn::Vec<D>>
 HWY_INLINE void quaternionGradient(D d, const LaneConstants<D>& k, V x, V y, V z0, V m, int fewest,
@@ -171,7 +171,12 @@ HWY_INLINE void quaternionGradient(D d, const LaneConstants<D>& k, V x, V y, V z
     // One iteration of the point and the tangents (iterateEachLaneItsCount's `hold`).
     iterateEachLaneItsCount(d, m, fewest, most, counters, [&](const auto& hold) {
         QuaternionT<V> n0, n1, n2, nz;
-        if constexpr (kQuadratic) {
+        if (!kQuadratic && k.program) {
+            const QuaternionT<V> h[3] = {t0, t1, t2};
+            QuaternionT<V> next[3];
+            nz = k.program.stepWithTangents(d, z, h, next);
+            n0 = next[0], n1 = next[1], n2 = next[2];
+        } else if constexpr (kQuadratic) {
             n0 = quadraticDerivative(z, t0, k.scale);
             n1 = quadraticDerivative(z, t1, k.scale);
             n2 = quadraticDerivative(z, t2, k.scale);

@@ -1,24 +1,30 @@
 // The plain-C++ side of march_lanes.h: flattening a Fractal for the lanes, and the batches.
+#include <algorithm>
 #include <cmath>
 
 #include "quaternia/render/lanes/march_lanes.h"
 
 namespace quaternia {
 
-std::optional<LaneFractal> LaneFractal::from(const Fractal& fractal, Precision precision) {
+LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
     const JuliaSet& set = fractal.set();
-    std::optional<PowerForm> power = set.polynomial().powerForm();
-    if (!power || power->degree < 1 || power->degree > kMaxLaneDegree) return std::nullopt;
     LaneFractal lanes;
+    std::optional<PowerForm> power = set.polynomial().powerForm();
+    if (power && power->degree >= 1 && power->degree <= kMaxLaneDegree) {
+        lanes.c = {power->constant.w, power->constant.x, power->constant.y, power->constant.z};
+        lanes.scale = power->scale;
+        lanes.degree = power->degree;
+    } else {
+        lanes.program = std::make_shared<const FormulaProgram>(set.program());
+        lanes.derivativeBound = set.polynomial().derivativeNormBoundCoefficients();
+        lanes.degree = std::max(1, set.polynomial().degree());
+    }
     auto components = [](const Quaternion& q) { return std::array<double, 4>{q.w, q.x, q.y, q.z}; };
     const Slice& slice = fractal.slice();
     // The slice map is affine: its value at the origin plus the images of the unit vectors.
     lanes.origin = components(slice.quaternionFromWorld(Point3d(0, 0, 0)));
     for (int axis = 0; axis < 3; ++axis)
         lanes.axes[axis] = components(slice.tangents()[axis]);
-    lanes.c = components(power->constant);
-    lanes.scale = power->scale;
-    lanes.degree = power->degree;
     lanes.maxIterations = set.maxIterations();
     lanes.bailoutSquared = set.bailout() * set.bailout();
     lanes.escapeRadiusSquared = set.escapeRadius() * set.escapeRadius();
@@ -28,6 +34,7 @@ std::optional<LaneFractal> LaneFractal::from(const Fractal& fractal, Precision p
 }
 
 LaneFractal LaneFractal::withComplexConstant() const {
+    if (program) return *this;
     const Vector3d imaginary(c[1], c[2], c[3]);
     const double length = std::sqrt(dot(imaginary, imaginary));
     if (!(length > 0)) return *this;  // c is real already

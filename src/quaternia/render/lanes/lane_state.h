@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <new>
+#include <vector>
 
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/util/lane_width.h"
@@ -18,6 +20,23 @@ template <class T>
 inline constexpr size_t kLaneCapacity = kLaneGroups* kMaxLaneBytes / sizeof(T);
 // One value per lane, aligned for vector loads and stores.
 #define QUATERNIA_LANE_ARRAY(T, name) alignas(kMaxLaneBytes) T name[kLaneCapacity<T>] = {}
+
+// Memory for lane vectors, aligned to the widest vector: std::allocator's own alignment did not
+// reach the 64 bytes of AVX-512 vectors here (a misaligned store faulted).
+template <class T>
+struct LaneAllocator {
+    using value_type = T;
+    LaneAllocator() = default;
+    template <class U>
+    LaneAllocator(const LaneAllocator<U>&) {}  // NOLINT: rebinding
+    T* allocate(size_t n) {
+        return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(kMaxLaneBytes)));
+    }
+    void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t(kMaxLaneBytes)); }
+    bool operator==(const LaneAllocator&) const { return true; }
+};
+template <class T>
+using LaneVector = std::vector<T, LaneAllocator<T>>;
 
 // The rays in the lanes: ray (index into the batch, -1 for an empty lane) and march state.
 template <class T>

@@ -19,8 +19,12 @@
 template <class V>
 concept QuaternionComponent = !std::is_arithmetic_v<V>;
 #include "quaternia/algebra/quaternion_arithmetic-inl.h"
+// The programs' interpreters and the iteration formulas for these vectors:
+#include "quaternia/algebra/formula_program_run-inl.h"
 #include "quaternia/fractal/julia_steps-inl.h"
-// After the formulas it uses:
+// After the formulas they use:
+#include "quaternia/render/lanes/program_lanes-inl.h"
+// After the programs' lanes, which LaneConstants holds:
 #include "quaternia/render/lanes/estimate_lanes-inl.h"
 #include "quaternia/render/lanes/gradient_lanes-inl.h"
 
@@ -72,12 +76,13 @@ HWY_INLINE void marchBatch(D d, const LaneConstants<D>& k, RayLanes<T>& rayLanes
 }
 
 // Calls work(d, quadratic) with the fractal's precision as the lane tag and its form as a
-// std::bool_constant: each march and estimate in both precisions and both forms, chosen at run
-// time.
+// std::bool_constant (true for s z^2 + c; s z^d + c and programs share the other, and tell
+// themselves apart at run time: LaneConstants::program): each march and estimate in both
+// precisions and both forms, chosen at run time.
 template <class Work>
 void run(const LaneFractal& fractal, const Work& work) {
     auto withForm = [&](auto d) {
-        if (fractal.degree == 2) {
+        if (fractal.degree == 2 && !fractal.program) {
             work(d, std::true_type{});
         } else {
             work(d, std::false_type{});

@@ -5,12 +5,14 @@
 // the batch runs dry. The arithmetic is the scalar reference's (distance.cpp, march.cpp, one
 // formula in julia_steps-inl.h), in float or double lanes.
 //
-// Only polynomials of the form s z^d + c take this path (z^2 + c specialised); others use the
-// scalar reference, which is correct for every eq. 2.10 polynomial.
+// Every eq. 2.10 polynomial takes this path: s z^d + c (d <= kMaxLaneDegree) by its own loops
+// (z^2 + c specialised), any other as its compiled program (algebra/formula_program.h) with the
+// scalar reference's running bound of the derivative (docs/methods.md, Distance estimate).
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -20,19 +22,25 @@
 namespace quaternia {
 
 // A Fractal flattened for the lanes: the slice as an affine map p -> origin + x axes[0] +
-// y axes[1] + z axes[2] of R^3 into H, and the power form s z^d + c.
+// y axes[1] + z axes[2] of R^3 into H, and the polynomial: the power form s z^d + c, or else
+// its program.
 struct LaneFractal {
     std::array<double, 4> origin{};
     std::array<std::array<double, 4>, 3> axes{};
     std::array<double, 4> c{};
     double scale = 1;
-    int degree = 2;
+    int degree = 2;  // of the polynomial, either form
+    // The general form (null for s z^d + c): p's program, and the coefficients of P'(r), lowest
+    // degree first, whose value at |z| bounds the derivative's gain (Polynomial::
+    // derivativeNormBound).
+    std::shared_ptr<const FormulaProgram> program;
+    std::vector<double> derivativeBound;
     int maxIterations = 1;
     double bailoutSquared = 4, escapeRadiusSquared = 4, stepScale = 1;
     Precision precision = Precision::Single;
 
-    // nullopt when the polynomial is not s z^d + c.
-    static std::optional<LaneFractal> from(const Fractal& fractal, Precision precision);
+    // The power form where the polynomial has it (d <= kMaxLaneDegree), else the program.
+    static LaneFractal from(const Fractal& fractal, Precision precision);
 
     // The same object seen through the rotation phi of the imaginary 3-space that takes Im c
     // onto the i axis: c becomes the complex Re c + |Im c| i and the slice map is followed by
@@ -40,7 +48,8 @@ struct LaneFractal {
     // (docs/facts.md, Symmetries), so phi(s z^d + c) = s phi(z)^d + phi(c): every orbit is the
     // rotated orbit, with the same radii, escape counts, estimates and gradient products. With
     // a complex c the j and k components of z^2 + c only scale (the quadratic float loop of
-    // estimate_lanes-inl.h iterates three numbers instead of four).
+    // estimate_lanes-inl.h iterates three numbers instead of four). The power form only: a
+    // program's coefficients would need rotating too (the fractal itself is returned).
     LaneFractal withComplexConstant() const;
 };
 
