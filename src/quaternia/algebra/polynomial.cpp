@@ -486,6 +486,24 @@ std::optional<PowerForm> Polynomial::powerForm() const {
     return form;
 }
 
+std::optional<RealForm> Polynomial::realForm() const {
+    RealForm form;
+    form.coefficients.assign(std::size_t(std::max(0, degree())) + 1, 0.0);
+    for (const Term& term : terms_) {
+        if (term.degree() == 0) {
+            form.constant = form.constant + term.coefficients[0];
+            continue;
+        }
+        double product = 1;
+        for (const Quaternion& a : term.coefficients) {
+            if (!isReal(a)) return std::nullopt;
+            product *= a.w;
+        }
+        form.coefficients[std::size_t(term.degree())] += product;
+    }
+    return form;
+}
+
 // With one top term |T(u)| = A_T exactly. With several, the terms can cancel (z i z - i z^2
 // vanishes on span{1, i}, docs/facts.md, Escape radius and bounding sphere), so a branch and bound
 // over S^3 certifies the minimum.

@@ -25,6 +25,14 @@ struct PowerForm {
     Quaternion constant;
 };
 
+// p(z) = sum_k a_k z^k + c with real a_k (index k; a_0 = 0): the polynomials that every rotation
+// of the imaginary 3-space commutes with but for c (docs/facts.md, Symmetries). Each iterate
+// then stays in span{1, Im z, Im c}, which the float lanes use (estimate_lanes-inl.h).
+struct RealForm {
+    std::vector<double> coefficients;
+    Quaternion constant;
+};
+
 class Polynomial {
   public:
     Polynomial() = default;
@@ -48,6 +56,9 @@ class Polynomial {
     // The polynomial as s z^d + c when it has that form (all coefficients of its one non-constant
     // term real), else nullopt.
     std::optional<PowerForm> powerForm() const;
+    // The polynomial as sum_k a_k z^k + c when every coefficient of its non-constant terms is
+    // real, else nullopt.
+    std::optional<RealForm> realForm() const;
 
     // m = min over unit u of |P_d(u)|, P_d the top-degree part: a certified lower bound (exact
     // for a single top term: the product of its coefficient norms). 0 when P_d may vanish on

@@ -101,6 +101,28 @@ TEST(Polynomial, DerivativeNormBoundCoefficientsGiveTheBound) {
     EXPECT_EQ(b[2], 3);
 }
 
+TEST(Polynomial, RealFormCollectsRealCoefficientsByDegree) {
+    const Quaternion c(-0.2, 0.6, 0.2, 0.2);
+    const auto form = compileFormula("z^3 + 0.5*z*2*z - 0.1*z + c", c).realForm();
+    ASSERT_TRUE(form);
+    EXPECT_EQ(form->coefficients, (std::vector<double>{0, -0.1, 1, 1}));
+    EXPECT_EQ(form->constant, c);
+    // Its value is the polynomial's.
+    const Polynomial p = compileFormula("z^3 + 0.5*z*2*z - 0.1*z + c", c);
+    std::mt19937 rng(8);
+    for (int n = 0; n < 20; ++n) {
+        const Quaternion z = randomQuaternion(rng, 1.5);
+        Quaternion value = form->constant, power(1);
+        for (double a : form->coefficients) {
+            value = value + power * a;
+            power = power * z;
+        }
+        EXPECT_LT(norm(value - form->constant - (p.evaluate(z) - c)), 1e-13);
+    }
+    EXPECT_FALSE(compileFormula("z^2 + 0.1j*z + c", c).realForm());
+    EXPECT_FALSE(compileFormula("i*z*j*z + c", c).realForm());
+}
+
 TEST(Polynomial, DetectsPowerForm) {
     const Quaternion c{-0.2, 0.6, 0.2, 0.2};
     const auto quadratic = compileFormula("z^2 + c", c).powerForm();

@@ -32,17 +32,32 @@ struct LaneConstants {
     bool threeNumbers;
     // The general form: the polynomial's program (false for s z^d + c).
     ProgramLanes<D> program;
+    // P'(r), whose value at |z| bounds the derivative's gain (programs and real forms).
+    DerivativeBoundLanes<D> derivativeBound;
+    // Estimates take estimateThreeNumbers with RealThreeNumbersGroup: float lanes, a polynomial
+    // sum a_k z^k + c with real a_k other than s z^2 + c, a certified bailout. realCoefficients
+    // holds the a_k.
+    bool realThreeNumbers;
+    LaneVector<V> realCoefficients;
 
     // Float lanes take the fractal through LaneFractal::withComplexConstant, which changes no
     // estimate, membership or gradient product: their quadratic loop then needs c = c.w + c.x i.
     // Double lanes keep the slice as given, to round as the scalar reference does.
-    LaneConstants(D d, const LaneFractal& given) : program(d, given) {
+    LaneConstants(D d, const LaneFractal& given)
+        : LaneConstants(d, sizeof(hn::TFromD<D>) == 4 ? given.withComplexConstant() : given, 0) {}
+
+  private:
+    LaneConstants(D d, const LaneFractal& f, int)
+        : program(d, f), derivativeBound(d, f.derivativeBound) {
         using T = hn::TFromD<D>;
-        const LaneFractal f = sizeof(T) == 4 ? given.withComplexConstant() : given;
         degree = f.degree;
         maxIterationCount = f.maxIterations;
         certified = f.bailoutSquared >= f.escapeRadiusSquared;
         threeNumbers = sizeof(T) == 4 && f.degree == 2 && !f.program && certified;
+        realThreeNumbers =
+            sizeof(T) == 4 && !threeNumbers && certified && !f.realCoefficients.empty();
+        for (double a : f.realCoefficients)
+            realCoefficients.push_back(hn::Set(d, T(a)));
         auto lanes = [&](const std::array<double, 4>& q, double factor = 1) {
             return QuaternionT<V>{hn::Set(d, T(factor * q[0])), hn::Set(d, T(factor * q[1])),
                                   hn::Set(d, T(factor * q[2])), hn::Set(d, T(factor * q[3]))};
@@ -73,6 +88,7 @@ struct LaneConstants {
         inverseFourScaleSquared = hn::Set(d, T(1 / fourScaleSquared));
     }
 
+  public:
     // The slice: a 3D point to its quaternion.
     QuaternionT<V> quaternionFromWorld(V x, V y, V z) const {
         return affine(origin, axis0, axis1, axis2, x, y, z);
@@ -330,7 +346,8 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionT<hn::Ve
         if (program) {
             // |z'|^2 <- P'(|z|)^2 |z'|^2, the bound the scalar reference carries, then z <- p(z).
             for (size_t j = 0; j < K; ++j)
-                g[j].derivativeSquared = g[j].derivativeSquared * k.program.gainSquared(g[j].r2);
+                g[j].derivativeSquared =
+                    g[j].derivativeSquared * k.derivativeBound.gainSquared(g[j].r2);
             k.program.step(z);
             for (size_t j = 0; j < K; ++j)
                 g[j].r2 = normSquaredPairwise(z[j]);
@@ -378,6 +395,10 @@ struct ThreeNumbersGroup {
         stopIteration = hn::Zero(d);
     }
 
+    // The thresholds in the loop's scale: where a lane's estimate is final, and the bailout.
+    static V stopRadius(const LaneConstants<D>& k) { return k.scaledEstimateRadiusSquared; }
+    static V insideRadius(const LaneConstants<D>& k) { return k.scaledBailoutSquared; }
+
     // The next iterate of the running lanes: |u'|^2 <- |u|^2 |u'|^2, then a <- (a^2 - b^2 -
     // rho) / 2 + 2 s c.w, b <- a b + 2 s c.x, rho <- a^2 rho.
     HWY_INLINE void iterate(const LaneConstants<D>& k, M running, V half) {
@@ -412,6 +433,74 @@ struct ThreeNumbersGroup {
     }
 };
 
+// One group of lanes of estimateThreeNumbers for a real form p(z) = sum a_k z^k + c
+// (LaneConstants::realThreeNumbers), unscaled: z = a + b i + e, e in span{j, k}, rho = |e|^2.
+// With v = Im z and s2 = |v|^2 = b^2 + rho, v^2 = -s2, so every power of z, and p(z) - c, lies in
+// span{1, v}: X + Y v, computed by Horner's rule in pairs, (X, Y) z = (X a - s2 Y, X + Y a).
+// Then z <- (X + c.w) + (Y b + c.x) i + Y e: a, b and rho <- Y^2 rho carry the orbit (c is
+// complex in the float lanes' rotated frame, LaneFractal::withComplexConstant). The derivative's
+// gain is the scalar reference's bound P'(|z|)^2 (exact for s z^d + c).
+template <class D>
+struct RealThreeNumbersGroup {
+    using V = hn::Vec<D>;
+    using M = hn::Mask<D>;
+    V a, b, rho;
+    V r2, derivativeSquared;
+    V trap, stopIteration;  // kOrbit only
+    M done, inside, escaped;
+
+    static V stopRadius(const LaneConstants<D>& k) { return k.estimateRadiusSquared; }
+    static V insideRadius(const LaneConstants<D>& k) { return k.bailoutSquared; }
+
+    HWY_INLINE void start(D d, const LaneConstants<D>& k, const QuaternionT<V>& z, M live, V one) {
+        a = z.w, b = z.x;
+        rho = hn::MulAdd(z.z, z.z, z.y * z.y);
+        r2 = hn::MulAdd(a, a, hn::MulAdd(b, b, rho));
+        derivativeSquared = one;
+        startLanes(d, r2, live, k.bailoutSquared, k.escapeRadiusSquared, k.estimateRadiusSquared,
+                   k.maxIterationCount, escaped, done, inside);
+        trap = r2;
+        stopIteration = hn::Zero(d);
+    }
+
+    HWY_INLINE void iterate(const LaneConstants<D>& k, M running, V) {
+        derivativeSquared = hn::IfThenElse(
+            running, derivativeSquared * k.derivativeBound.gainSquared(r2), derivativeSquared);
+        const LaneVector<V>& coefficient = k.realCoefficients;
+        const V s2 = hn::MulAdd(b, b, rho);
+        const std::size_t degree = coefficient.size() - 1;
+        // (X, Y) = a_d z + a_{d-1}, then times z plus a_k down to k = 0 (a_0 = 0).
+        V x = hn::MulAdd(coefficient[degree], a, coefficient[degree - 1]);
+        V y = coefficient[degree];
+        for (std::size_t n = degree - 1; n-- > 0;) {
+            const V nextX = hn::NegMulAdd(s2, y, hn::MulAdd(x, a, coefficient[n]));
+            y = hn::MulAdd(y, a, x);
+            x = nextX;
+        }
+        a = x + k.c.w;
+        b = hn::MulAdd(y, b, k.c.x);
+        rho = y * y * rho;
+        r2 = hn::IfThenElse(running, hn::MulAdd(a, a, hn::MulAdd(b, b, rho)), r2);
+    }
+
+    template <bool kOrbit>
+    HWY_INLINE void finish(D d, const LaneConstants<D>& k, int n, LaneEstimate<D>& result,
+                           LaneCounters& counters) {
+        using T = hn::TFromD<D>;
+        const auto unfinished = hn::Not(done);
+        counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
+        result.inside = inside;
+        result.distance =
+            hn::IfThenZeroElse(inside, closingDistance(d, r2, derivativeSquared, k.stepScale));
+        result.radiusSquared = r2;
+        if constexpr (kOrbit) {
+            result.trapSquared = trap;
+            stopIteration = hn::IfThenElse(unfinished, hn::Set(d, T(n - 1)), stopIteration);
+            result.iterations = hn::IfThenElse(inside, k.maxIterations, stopIteration);
+        }
+    }
+};
+
 // estimateLanes' certified case for float lanes of s z^2 + c and distances alone: the hot loop
 // of the renderer (LaneConstants::threeNumbers). The points come as u = 2 s z
 // (LaneConstants::loopFromWorld), for which the map reads u <- u^2 / 2 + 2 s c and the running
@@ -423,7 +512,10 @@ struct ThreeNumbersGroup {
 // counters want the iteration count; they count the running lanes instead of keeping each
 // lane's count. Fills distance, inside and radiusSquared; kOrbit also the trap and the
 // iteration count, as estimateLanes does.
-template <bool kOrbit, size_t K, class D>
+//
+// The same loop takes real forms sum a_k z^k + c with Group = RealThreeNumbersGroup (the points
+// then as z itself, LaneConstants::quaternionFromWorld).
+template <bool kOrbit, class Group, size_t K, class D>
 HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
                                      const QuaternionT<hn::Vec<D>> (&u)[K],
                                      const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
@@ -432,7 +524,8 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
     using M = hn::Mask<D>;
     using T = hn::TFromD<D>;
     const V one = hn::Set(d, T(1)), half = hn::Set(d, T(0.5));
-    ThreeNumbersGroup<D> g[K];
+    const V stopRadius = Group::stopRadius(k), insideRadius = Group::insideRadius(k);
+    Group g[K];
     bool allDone = true;
     for (size_t j = 0; j < K; ++j) {
         g[j].start(d, k, u[j], live[j], one);
@@ -451,11 +544,10 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
                 // The trap takes the iterates up to the first past the bailout.
                 const auto settled = hn::Or(g[j].escaped, doneBefore);
                 g[j].trap = hn::IfThenElse(settled, g[j].trap, hn::Min(g[j].trap, g[j].r2));
-                g[j].escaped = hn::Or(g[j].escaped, g[j].r2 > k.scaledBailoutSquared);
+                g[j].escaped = hn::Or(g[j].escaped, g[j].r2 > insideRadius);
             }
-            const bool groupDone =
-                settleFrozen(d, g[j].r2, k.scaledEstimateRadiusSquared, k.scaledBailoutSquared,
-                             last, g[j].done, g[j].inside, runningLanes);
+            const bool groupDone = settleFrozen(d, g[j].r2, stopRadius, insideRadius, last,
+                                                g[j].done, g[j].inside, runningLanes);
             if constexpr (kOrbit) {
                 g[j].stopIteration = hn::IfThenElse(hn::AndNot(doneBefore, g[j].done),
                                                     hn::Set(d, T(n)), g[j].stopIteration);
@@ -490,7 +582,9 @@ HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes
     }
     if (!anyLive) return false;
     if (kQuadratic && k.threeNumbers) {
-        estimateThreeNumbers<false>(d, k, q, live, e, counters);
+        estimateThreeNumbers<false, ThreeNumbersGroup<D>>(d, k, q, live, e, counters);
+    } else if (!kQuadratic && k.realThreeNumbers) {
+        estimateThreeNumbers<false, RealThreeNumbersGroup<D>>(d, k, q, live, e, counters);
     } else {
         estimateLanes<kQuadratic, false>(d, k, q, live, e, counters);
     }

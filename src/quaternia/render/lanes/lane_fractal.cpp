@@ -9,15 +9,20 @@ namespace quaternia {
 LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
     const JuliaSet& set = fractal.set();
     LaneFractal lanes;
-    std::optional<PowerForm> power = set.polynomial().powerForm();
+    const Polynomial& polynomial = set.polynomial();
+    lanes.derivativeBound = polynomial.derivativeNormBoundCoefficients();
+    std::optional<PowerForm> power = polynomial.powerForm();
     if (power && power->degree >= 1 && power->degree <= kMaxLaneDegree) {
         lanes.c = {power->constant.w, power->constant.x, power->constant.y, power->constant.z};
         lanes.scale = power->scale;
         lanes.degree = power->degree;
     } else {
         lanes.program = std::make_shared<const FormulaProgram>(set.program());
-        lanes.derivativeBound = set.polynomial().derivativeNormBoundCoefficients();
-        lanes.degree = std::max(1, set.polynomial().degree());
+        lanes.degree = std::max(1, polynomial.degree());
+    }
+    if (std::optional<RealForm> real = polynomial.realForm(); real && lanes.degree >= 2) {
+        lanes.realCoefficients = real->coefficients;
+        lanes.c = {real->constant.w, real->constant.x, real->constant.y, real->constant.z};
     }
     auto components = [](const Quaternion& q) { return std::array<double, 4>{q.w, q.x, q.y, q.z}; };
     const Slice& slice = fractal.slice();
@@ -34,7 +39,7 @@ LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
 }
 
 LaneFractal LaneFractal::withComplexConstant() const {
-    if (program) return *this;
+    if (program && realCoefficients.empty()) return *this;
     const Vector3d imaginary(c[1], c[2], c[3]);
     const double length = std::sqrt(dot(imaginary, imaginary));
     if (!(length > 0)) return *this;  // c is real already
@@ -53,6 +58,20 @@ LaneFractal LaneFractal::withComplexConstant() const {
     for (auto& axis : rotated.axes)
         axis = rotate(axis);
     rotated.c = {c[0], length, 0, 0};
+    if (program) {
+        // phi fixes the real coefficients: the program of sum a_k z^k + phi(c).
+        std::vector<Term> terms;
+        for (std::size_t k = 1; k < realCoefficients.size(); ++k) {
+            if (realCoefficients[k] == 0) continue;
+            Term term;
+            term.coefficients.assign(k + 1, Quaternion(1));
+            term.coefficients[0] = Quaternion(realCoefficients[k]);
+            terms.push_back(std::move(term));
+        }
+        terms.push_back(Term{{Quaternion(c[0], length, 0, 0)}});
+        rotated.program = std::make_shared<const FormulaProgram>(
+            FormulaProgram::fromPolynomial(Polynomial(terms)));
+    }
     return rotated;
 }
 

@@ -35,6 +35,9 @@ struct LaneFractal {
     // derivativeNormBound).
     std::shared_ptr<const FormulaProgram> program;
     std::vector<double> derivativeBound;
+    // Where every coefficient but c is real (Polynomial::realForm; power forms too): the a_k of
+    // sum a_k z^k + c, c in `c`. Empty otherwise.
+    std::vector<double> realCoefficients;
     int maxIterations = 1;
     double bailoutSquared = 4, escapeRadiusSquared = 4, stepScale = 1;
     Precision precision = Precision::Single;
@@ -48,8 +51,8 @@ struct LaneFractal {
     // (docs/facts.md, Symmetries), so phi(s z^d + c) = s phi(z)^d + phi(c): every orbit is the
     // rotated orbit, with the same radii, escape counts, estimates and gradient products. With
     // a complex c the j and k components of z^2 + c only scale (the quadratic float loop of
-    // estimate_lanes-inl.h iterates three numbers instead of four). The power form only: a
-    // program's coefficients would need rotating too (the fractal itself is returned).
+    // estimate_lanes-inl.h iterates three numbers instead of four). Real forms only: a program
+    // with quaternion coefficients is returned as it is.
     LaneFractal withComplexConstant() const;
 };
 

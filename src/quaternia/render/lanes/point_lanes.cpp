@@ -48,7 +48,11 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
         LaneEstimate<D> estimates[1];
         if (kQuadratic && k.threeNumbers) {
             const QuaternionT<hn::Vec<D>> u[1] = {k.loopFromWorld(x, y, z)};
-            estimateThreeNumbers<kOrbit>(d, k, u, live, estimates, counters);
+            estimateThreeNumbers<kOrbit, ThreeNumbersGroup<D>>(d, k, u, live, estimates, counters);
+        } else if (!kQuadratic && k.realThreeNumbers) {
+            const QuaternionT<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
+            estimateThreeNumbers<kOrbit, RealThreeNumbersGroup<D>>(d, k, q, live, estimates,
+                                                                   counters);
         } else {
             QuaternionT<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
             estimateLanes<kQuadratic, kOrbit>(d, k, q, live, estimates, counters);

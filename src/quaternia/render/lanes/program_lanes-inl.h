@@ -1,5 +1,5 @@
 // The general form in SIMD lanes: any eq. 2.10 polynomial as its compiled program
-// (algebra/formula_program.h) run on quaternions of lane vectors, with the running bound of the
+// (algebra/formula_program.h) run on quaternions of lane vectors, and the running bound of the
 // derivative's norm that the scalar reference carries (distance.h: rho <- P'(|z|) rho).
 //
 // Like estimate_lanes-inl.h, this file has no namespace of its own: march_lanes-inl.h includes
@@ -12,6 +12,48 @@
 #else
 #define QUATERNIA_PROGRAM_LANES_INL_H_
 #endif
+
+// P'(r) of a LaneFractal (LaneFractal::derivativeBound) as lanes: the squared gain of the running
+// derivative bound at |z|^2 = r2. With P'(r) = E(r^2) + r O(r^2) (its even and odd powers), the
+// square is E(r2)^2 where P' has no odd powers (z^3: 3 r^2), r2 O(r2)^2 where it has no even
+// ones (z^2: 2 r), and needs a square root only where it has both (z^2 + 0.1 z: 2 r + 0.1).
+template <class D>
+struct DerivativeBoundLanes {
+    using V = hn::Vec<D>;
+
+    DerivativeBoundLanes(D d, const std::vector<double>& coefficients) {
+        using T = hn::TFromD<D>;
+        for (std::size_t k = 0; k < coefficients.size(); ++k) {
+            (k % 2 == 0 ? even_ : odd_).push_back(hn::Set(d, T(coefficients[k])));
+            if (coefficients[k] != 0) (k % 2 == 0 ? hasEven_ : hasOdd_) = true;
+        }
+        if (even_.empty()) even_.push_back(hn::Zero(d));
+        if (odd_.empty()) odd_.push_back(hn::Zero(d));
+    }
+
+    HWY_INLINE V gainSquared(V r2) const {
+        if (!hasOdd_) {
+            const V e = inSquare(even_, r2);
+            return e * e;
+        }
+        const V o = inSquare(odd_, r2);
+        if (!hasEven_) return r2 * o * o;
+        const V bound = hn::MulAdd(hn::Sqrt(r2), o, inSquare(even_, r2));
+        return bound * bound;
+    }
+
+  private:
+    // sum_m coefficients[m] r2^m by Horner's rule.
+    static HWY_INLINE V inSquare(const LaneVector<V>& coefficients, V r2) {
+        V sum = coefficients.back();
+        for (std::size_t m = coefficients.size() - 1; m-- > 0;)
+            sum = hn::MulAdd(sum, r2, coefficients[m]);
+        return sum;
+    }
+
+    LaneVector<V> even_, odd_;  // the coefficients of r^(2m) and of r^(2m+1), by m
+    bool hasEven_ = false, hasOdd_ = false;
+};
 
 // A LaneFractal's program with its constants, scale factors and P'(r) as lanes, and the
 // registers to run it in (scratch: one ProgramLanes per thread, as LaneConstants is).
@@ -29,9 +71,6 @@ struct ProgramLanes {
                 Q{hn::Set(d, T(q.w)), hn::Set(d, T(q.x)), hn::Set(d, T(q.y)), hn::Set(d, T(q.z))});
         for (double factor : program_->factors())
             factors_.push_back(hn::Set(d, T(factor)));
-        for (double b : f.derivativeBound)
-            derivativeBound_.push_back(hn::Set(d, T(b)));
-        if (derivativeBound_.empty()) derivativeBound_.push_back(hn::Zero(d));
         // The groups' registers interleaved, register n of group j at n * kLaneGroups + j, the
         // constants' written once here: step() runs every instruction but those.
         registers_.assign(code.size() * kLaneGroups, constants_.empty() ? Q{} : constants_[0]);
@@ -99,16 +138,6 @@ struct ProgramLanes {
             z[j] = result[j];
     }
 
-    // The squared gain of the running derivative bound at |z|^2 = r2: P'(|z|)^2, by Horner's
-    // rule from P'(r)'s coefficients.
-    HWY_INLINE V gainSquared(V r2) const {
-        const V r = hn::Sqrt(r2);
-        V bound = derivativeBound_.back();
-        for (std::size_t k = derivativeBound_.size() - 1; k-- > 0;)
-            bound = hn::MulAdd(bound, r, derivativeBound_[k]);
-        return bound * bound;
-    }
-
     // p(z) and its derivative along the three tangents h (Dp(z)[h_m], the product rule in the
     // order written), for the analytic normal.
     HWY_INLINE Q stepWithTangents(D d, const Q& z, const Q (&h)[3], Q (&derivative)[3]) const {
@@ -122,7 +151,6 @@ struct ProgramLanes {
     std::shared_ptr<const FormulaProgram> program_;
     LaneVector<Q> constants_;
     LaneVector<V> factors_;
-    LaneVector<V> derivativeBound_;  // P'(r)'s coefficients, lowest degree first
     mutable LaneVector<Q> registers_;
     mutable LaneVector<Q> gradientRegisters_;
     mutable LaneVector<Q> tangentRegisters_;
