@@ -182,11 +182,27 @@ TEST(MarchLanes, EstimatesMatchTheScalarReference) {
     expectEstimatesMatch(tiltedFractal(), 4);
 }
 
+// Formulas that are not s z^d + c: a real form (float lanes: three numbers; double: the program)
+// and a two-sided one (the program in both).
+Fractal formulaFractal(const char* formula) {
+    Scene scene = testing::referenceScene("case01_sqr_A");
+    scene.fractal.formula = formula;
+    return Fractal::fromScene(scene);
+}
+
+TEST(MarchLanes, ProgramEstimatesMatchTheScalarReference) {
+    expectEstimatesMatch(formulaFractal("z^2 + 0.1*z + c"), 5);
+    expectEstimatesMatch(formulaFractal("(1+0.2i) z (1-0.1k) z + c"), 6);
+}
+
 // Points just outside the set (where the renderer takes normals): the lanes' analytic gradient
 // points the way of Fractal::normal.
 TEST(MarchLanes, NormalsMatchTheAnalyticNormal) {
-    for (const char* id : {"case01_sqr_A", "case08_cube_F"}) {
-        Fractal fractal = Fractal::fromScene(testing::referenceScene(id));
+    for (const char* id :
+         {"case01_sqr_A", "case08_cube_F", "z^2 + 0.1*z + c", "(1+0.2i) z (1-0.1k) z + c"}) {
+        const bool isFormula = std::string(id).find('z') != std::string::npos;
+        Fractal fractal =
+            isFormula ? formulaFractal(id) : Fractal::fromScene(testing::referenceScene(id));
         PointBatch all = randomPoints(4000, 1.6, 5), nearSet;
         std::vector<int> iterations;
         for (size_t i = 0; i < all.size(); ++i) {

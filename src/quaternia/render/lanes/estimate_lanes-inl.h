@@ -38,6 +38,7 @@ struct LaneConstants {
     // sum a_k z^k + c with real a_k other than s z^2 + c, a certified bailout. realCoefficients
     // holds the a_k.
     bool realThreeNumbers;
+    bool realForm;  // realCoefficients holds the a_k (any precision)
     LaneVector<V> realCoefficients;
 
     // Float lanes take the fractal through LaneFractal::withComplexConstant, which changes no
@@ -56,6 +57,7 @@ struct LaneConstants {
         threeNumbers = sizeof(T) == 4 && f.degree == 2 && !f.program && certified;
         realThreeNumbers =
             sizeof(T) == 4 && !threeNumbers && certified && !f.realCoefficients.empty();
+        realForm = !f.realCoefficients.empty();
         for (double a : f.realCoefficients)
             realCoefficients.push_back(hn::Set(d, T(a)));
         auto lanes = [&](const std::array<double, 4>& q, double factor = 1) {

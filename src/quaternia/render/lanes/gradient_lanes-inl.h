@@ -144,6 +144,39 @@ HWY_INLINE void threeNumberGradientToItsCount(D d, const LaneConstants<D>& k, V 
     tangents.gradient(gx, gy, gz);
 }
 
+// One iterate of a real form p(z) = sum a_k z^k + c (LaneConstants::realCoefficients) and of
+// three tangents through its Jacobian. With z = a + v and s2 = |v|^2, p(z) - c = X + Y v for
+// X, Y functions of a and s2 (estimate_lanes-inl.h, RealThreeNumbersGroup), so
+// Dp(z)[h] = (X_a h0 + X_s ds2) + (Y_a h0 + Y_s ds2) v + Y hv, ds2 = 2 v . hv: the four
+// partial derivatives come once per iterate from Horner's rule (forward mode), and each tangent
+// costs a dozen operations instead of the quaternion products of the product rule.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE void realFormStep(const LaneConstants<D>& k, QuaternionT<V>& z, QuaternionT<V> (&t)[3]) {
+    const LaneVector<V>& coefficient = k.realCoefficients;
+    const std::size_t degree = coefficient.size() - 1;
+    const V a = z.w, s2 = hn::MulAdd(z.x, z.x, hn::MulAdd(z.y, z.y, z.z * z.z));
+    V x = hn::MulAdd(coefficient[degree], a, coefficient[degree - 1]), y = coefficient[degree];
+    V xa = coefficient[degree], ya = hn::Zero(D()), xs = hn::Zero(D()), ys = hn::Zero(D());
+    for (std::size_t n = degree - 1; n-- > 0;) {
+        const V nextXa = hn::NegMulAdd(s2, ya, hn::MulAdd(xa, a, x));
+        const V nextXs = hn::NegMulAdd(s2, ys, hn::MulSub(xs, a, y));
+        const V nextYa = hn::MulAdd(ya, a, xa + y);
+        const V nextYs = hn::MulAdd(ys, a, xs);
+        const V nextX = hn::NegMulAdd(s2, y, hn::MulAdd(x, a, coefficient[n]));
+        y = hn::MulAdd(y, a, x);
+        x = nextX;
+        xa = nextXa, xs = nextXs, ya = nextYa, ys = nextYs;
+    }
+    for (QuaternionT<V>& h : t) {
+        const V ds2 = (hn::MulAdd(z.x, h.x, hn::MulAdd(z.y, h.y, z.z * h.z))) * hn::Set(D(), 2);
+        const V dx = hn::MulAdd(xa, h.w, xs * ds2), dy = hn::MulAdd(ya, h.w, ys * ds2);
+        h = {dx, hn::MulAdd(dy, z.x, y * h.x), hn::MulAdd(dy, z.y, y * h.y),
+             hn::MulAdd(dy, z.z, y * h.z)};
+    }
+    z = {x + k.c.w, hn::MulAdd(y, z.x, k.c.x), hn::MulAdd(y, z.y, k.c.y),
+         hn::MulAdd(y, z.z, k.c.z)};
+}
+
 // potentialNormalLanes' gradient in quaternions, for any s z^d + c or program in float or double:
 // the three tangents of the slice carried through the Jacobian of p at each iterate (the chain
 // rule), and their inner products with z_M.
@@ -171,7 +204,12 @@ HWY_INLINE void quaternionGradient(D d, const LaneConstants<D>& k, V x, V y, V z
     // One iteration of the point and the tangents (iterateEachLaneItsCount's `hold`).
     iterateEachLaneItsCount(d, m, fewest, most, counters, [&](const auto& hold) {
         QuaternionT<V> n0, n1, n2, nz;
-        if (!kQuadratic && k.program) {
+        if (!kQuadratic && k.realForm) {
+            QuaternionT<V> next[3] = {t0, t1, t2};
+            nz = z;
+            realFormStep(k, nz, next);
+            n0 = next[0], n1 = next[1], n2 = next[2];
+        } else if (!kQuadratic && k.program) {
             const QuaternionT<V> h[3] = {t0, t1, t2};
             QuaternionT<V> next[3];
             nz = k.program.stepWithTangents(d, z, h, next);
