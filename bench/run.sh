@@ -44,6 +44,15 @@ scene default-1080p-16spp-uniform --width 1920 --height 1080 --set render.sample
   --set render.adaptive=false
 scene default-1080p-16spp-adaptive --width 1920 --height 1080 --set render.samples=16 \
   --set render.adaptive=true
+# Formulas that are not z^2 + c (issue 17), the default scene otherwise: a real form (float
+# three-number lanes), a two-sided one (a compiled program on lane quaternions) and z^3 + c with
+# c = -0.5 + 0.5i. With AVX-512 switched off: build/quaternia_bench --benchmark_filter=RenderFormula
+scene formula-z2+0.1z-1080p --width 1920 --height 1080 "${one_spp[@]}" \
+  --set 'fractal.formula=z^2 + 0.1*z + c'
+scene formula-two-sided-1080p --width 1920 --height 1080 "${one_spp[@]}" \
+  --set 'fractal.formula=(1+0.2i) z (1-0.1k) z + c'
+scene formula-z3-1080p --width 1920 --height 1080 "${one_spp[@]}" \
+  --set 'fractal.formula=z^3 + c' --set 'fractal.c=[-0.5, 0.5, 0, 0]'
 scene default-1080p-1-thread --width 1920 --height 1080 "${one_spp[@]}" --threads 1
 scene default-1080p-double --width 1920 --height 1080 "${one_spp[@]}" --set render.precision=double
 scene default-1080p-scalar --width 1920 --height 1080 "${one_spp[@]}" --set render.engine=scalar
