@@ -73,6 +73,18 @@ BENCHMARK(BM_DistanceEstimateLanes)->Arg(0)->Arg(1);
 // A whole frame: arguments are width, height, samples, threads (0 = all cores) and the path
 // (0 SIMD single, 1 SIMD double, 2 scalar reference, 3 SIMD single with AVX-512 switched off:
 // what a machine with AVX2 as its widest SIMD would run, comparable across machines).
+// What explains a frame's speed: lane use, rays/s, steps and iterations per ray, shading work.
+void reportRenderCounters(benchmark::State& state, const RenderStats& last) {
+    state.counters["lane_utilisation"] =
+        last.laneSlots ? double(last.laneIterations) / double(last.laneSlots) : 0.0;
+    state.counters["rays/s"] =
+        benchmark::Counter(double(last.rays) * state.iterations(), benchmark::Counter::kIsRate);
+    state.counters["steps/ray"] = double(last.marchSteps) / double(last.rays);
+    state.counters["iterations/ray"] = double(last.iterations) / double(last.rays);
+    state.counters["shading_estimates/hit"] =
+        last.hits ? double(last.shadingEstimates) / double(last.hits) : 0.0;
+}
+
 void BM_RenderDefaultScene(benchmark::State& state) {
     Scene scene = defaultScene();
     scene.render.width = int(state.range(0));
@@ -88,14 +100,7 @@ void BM_RenderDefaultScene(benchmark::State& state) {
         last = render(scene, options).stats;
     hwy::DisableTargets(0);
     state.SetLabel(last.engine);
-    state.counters["lane_utilisation"] =
-        last.laneSlots ? double(last.laneIterations) / double(last.laneSlots) : 0.0;
-    state.counters["rays/s"] =
-        benchmark::Counter(double(last.rays) * state.iterations(), benchmark::Counter::kIsRate);
-    state.counters["steps/ray"] = double(last.marchSteps) / double(last.rays);
-    state.counters["iterations/ray"] = double(last.iterations) / double(last.rays);
-    state.counters["shading_estimates/hit"] =
-        last.hits ? double(last.shadingEstimates) / double(last.hits) : 0.0;
+    reportRenderCounters(state, last);
 }
 BENCHMARK(BM_RenderDefaultScene)
     ->Args({640, 360, 1, 0, 0})
@@ -137,12 +142,7 @@ void BM_RenderFormula(benchmark::State& state) {
         last = render(scene, options).stats;
     hwy::DisableTargets(0);
     state.SetLabel(std::string(given.formula) + " " + last.engine);
-    state.counters["lane_utilisation"] =
-        last.laneSlots ? double(last.laneIterations) / double(last.laneSlots) : 0.0;
-    state.counters["rays/s"] =
-        benchmark::Counter(double(last.rays) * state.iterations(), benchmark::Counter::kIsRate);
-    state.counters["steps/ray"] = double(last.marchSteps) / double(last.rays);
-    state.counters["iterations/ray"] = double(last.iterations) / double(last.rays);
+    reportRenderCounters(state, last);
 }
 BENCHMARK(BM_RenderFormula)
     ->ArgsProduct({{0, 1, 2, 3}, {0, 1}})

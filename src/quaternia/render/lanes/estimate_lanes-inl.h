@@ -370,6 +370,27 @@ HWY_INLINE void estimateLanes(D d, const LaneConstants<D>& k, QuaternionT<hn::Ve
         g[j].finish(d, k, certified, n, iteration, live[j], result[j], counters);
 }
 
+// The estimates of a group of estimateThreeNumbers once its loop ended after n - 1 iterates: its
+// |z|^2, |z'|^2, trap and iteration counts where each lane stopped, radii times radiusScale to
+// |z|^2 (1 / (4 s^2) for u = 2 s z, 1 for z itself).
+template <bool kOrbit, class D, class Group>
+HWY_INLINE void finishFrozenGroup(D d, const LaneConstants<D>& k, int n, hn::Vec<D> radiusScale,
+                                  Group& g, LaneEstimate<D>& result, LaneCounters& counters) {
+    using T = hn::TFromD<D>;
+    const auto unfinished = hn::Not(g.done);  // the continuation cap ended them
+    const hn::Vec<D> radiusSquared = g.r2 * radiusScale;
+    counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
+    result.inside = g.inside;
+    result.distance = hn::IfThenZeroElse(
+        g.inside, closingDistance(d, radiusSquared, g.derivativeSquared, k.stepScale));
+    result.radiusSquared = radiusSquared;
+    if constexpr (kOrbit) {
+        result.trapSquared = g.trap * radiusScale;
+        g.stopIteration = hn::IfThenElse(unfinished, hn::Set(d, T(n - 1)), g.stopIteration);
+        result.iterations = hn::IfThenElse(g.inside, k.maxIterations, g.stopIteration);
+    }
+}
+
 // One group of lanes of estimateThreeNumbers (below): the orbit as a, b, rho, with aa = a^2 and
 // rest = b^2 + rho (|u|^2 = aa + rest); |u|^2 and |u'|^2 of the lanes still running, a lane's
 // staying where it stopped (merge-masked arithmetic: no separate copies taken when lanes stop, two
@@ -418,20 +439,7 @@ struct ThreeNumbersGroup {
     template <bool kOrbit>
     HWY_INLINE void finish(D d, const LaneConstants<D>& k, int n, LaneEstimate<D>& result,
                            LaneCounters& counters) {
-        using T = hn::TFromD<D>;
-        const auto unfinished = hn::Not(done);  // the continuation cap ended them
-        const V radiusSquared = r2 * k.inverseFourScaleSquared;
-        const V derivative = derivativeSquared;
-        counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
-        result.inside = inside;
-        result.distance =
-            hn::IfThenZeroElse(inside, closingDistance(d, radiusSquared, derivative, k.stepScale));
-        result.radiusSquared = radiusSquared;
-        if constexpr (kOrbit) {
-            result.trapSquared = trap * k.inverseFourScaleSquared;
-            stopIteration = hn::IfThenElse(unfinished, hn::Set(d, T(n - 1)), stopIteration);
-            result.iterations = hn::IfThenElse(inside, k.maxIterations, stopIteration);
-        }
+        finishFrozenGroup<kOrbit>(d, k, n, k.inverseFourScaleSquared, *this, result, counters);
     }
 };
 
@@ -488,18 +496,7 @@ struct RealThreeNumbersGroup {
     template <bool kOrbit>
     HWY_INLINE void finish(D d, const LaneConstants<D>& k, int n, LaneEstimate<D>& result,
                            LaneCounters& counters) {
-        using T = hn::TFromD<D>;
-        const auto unfinished = hn::Not(done);
-        counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
-        result.inside = inside;
-        result.distance =
-            hn::IfThenZeroElse(inside, closingDistance(d, r2, derivativeSquared, k.stepScale));
-        result.radiusSquared = r2;
-        if constexpr (kOrbit) {
-            result.trapSquared = trap;
-            stopIteration = hn::IfThenElse(unfinished, hn::Set(d, T(n - 1)), stopIteration);
-            result.iterations = hn::IfThenElse(inside, k.maxIterations, stopIteration);
-        }
+        finishFrozenGroup<kOrbit>(d, k, n, hn::Set(d, hn::TFromD<D>(1)), *this, result, counters);
     }
 };
 
