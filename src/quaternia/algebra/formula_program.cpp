@@ -2,6 +2,7 @@
 // few instructions, with constants folded and equal instructions shared.
 #include "quaternia/algebra/formula_program.h"
 
+#include <array>
 #include <map>
 #include <optional>
 #include <tuple>
@@ -90,15 +91,57 @@ class Compiler {
         // A real factor commutes with everything: a scaling of the other factor.
         if (value(a) && isReal(*value(a))) return scale(b, value(a)->w);
         if (value(b) && isReal(*value(b))) return scale(a, value(b)->w);
+        // Any other constant factor is a linear map of the other factor (q x, x q), composed
+        // with the map that made it, if one did: q z r is one map, not two products.
+        if (value(a)) return linear(productMatrix(*value(a), true), b);
+        if (value(b)) return linear(productMatrix(*value(b), false), a);
         if (a == b) return emit({Op::kSquare, a});
         return emit({Op::kMultiply, a, b});
     }
 
   private:
+    using Matrix = std::array<double, 16>;  // row by row
+
+    // The matrix of x -> q x (left) or x -> x q: column c is q e_c or e_c q.
+    static Matrix productMatrix(const Quaternion& q, bool left) {
+        const Quaternion basis[4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+        Matrix m{};
+        for (int c = 0; c < 4; ++c) {
+            const Quaternion column = left ? q * basis[c] : basis[c] * q;
+            m[0 + c] = column.w, m[4 + c] = column.x, m[8 + c] = column.y, m[12 + c] = column.z;
+        }
+        return m;
+    }
+    const double* matrixOf(int r) const { return &factors_[instructions_[r].index]; }
+
+    // m applied to register a; where a is itself a linear map of x, the product matrix applied
+    // to x.
+    int linear(Matrix m, int a) {
+        if (instructions_[a].op == Op::kLinear) {
+            const double* inner = matrixOf(a);
+            Matrix product{};
+            for (int r = 0; r < 4; ++r)
+                for (int c = 0; c < 4; ++c)
+                    for (int k = 0; k < 4; ++k)
+                        product[r * 4 + c] += m[r * 4 + k] * inner[k * 4 + c];
+            return linear(product, instructions_[a].a);
+        }
+        const int index = int(factors_.size());
+        factors_.insert(factors_.end(), m.begin(), m.end());
+        return emit({Op::kLinear, a, -1, index});
+    }
+
     int scale(int a, double factor) {
         if (factor == 0) return constant(Quaternion());
         if (factor == 1) return a;
         if (factor == -1) return negate(a);
+        if (instructions_[a].op == Op::kLinear) {  // folded into the map
+            Matrix m;
+            const double* inner = matrixOf(a);
+            for (int e = 0; e < 16; ++e)
+                m[e] = factor * inner[e];
+            return linear(m, instructions_[a].a);
+        }
         std::size_t k = 0;
         while (k < factors_.size() && factors_[k] != factor)
             ++k;

@@ -31,10 +31,13 @@ struct Instruction {
         kMultiply,  // a b, in that order
         kSquare,    // a a
         kScale,     // a times the real factors()[index]
+        // The linear map of a whose 4x4 matrix, row by row, is factors()[index .. index + 15]:
+        // products with constants on either side, q a and a q, composed (q a r is one map).
+        kLinear,
     };
     Op op = Op::kZ;
     std::int32_t a = -1, b = -1;  // operand registers, earlier than this one
-    std::int32_t index = -1;      // kConstant, kScale
+    std::int32_t index = -1;      // kConstant, kScale, kLinear
 };
 
 class FormulaProgram {

@@ -5,6 +5,17 @@
 // defined there) and calls it by its qualified name, so that the two never compete. No include
 // guard, for that reason; each place includes it once.
 
+// The linear map whose 4x4 matrix, row by row, starts at m (Instruction::Op::kLinear). Called
+// as (applyLinear)(...): the parentheses keep argument-dependent lookup from finding the other
+// namespace's copy of this file.
+template <class Element, class Real>
+Element applyLinear(const Real* m, const Element& a) {
+    return {m[0] * a.w + m[1] * a.x + m[2] * a.y + m[3] * a.z,
+            m[4] * a.w + m[5] * a.x + m[6] * a.y + m[7] * a.z,
+            m[8] * a.w + m[9] * a.x + m[10] * a.y + m[11] * a.z,
+            m[12] * a.w + m[13] * a.x + m[14] * a.y + m[15] * a.z};
+}
+
 // Runs `code` at z with `registers` (at least code.size() of them): `constants` and `factors` are
 // the program's, converted to Element and Real. Returns register `result`.
 template <class Element, class Real>
@@ -37,6 +48,9 @@ Element runProgram(const std::vector<Instruction>& code, int result, const Eleme
                 break;
             case Op::kScale:
                 registers[n] = registers[i.a] * factors[i.index];
+                break;
+            case Op::kLinear:
+                registers[n] = (applyLinear)(factors + i.index, registers[i.a]);
                 break;
         }
     }
@@ -99,6 +113,12 @@ Element runProgramWithTangents(const std::vector<Instruction>& code, int result,
                 registers[n] = registers[i.a] * factors[i.index];
                 for (int m = 0; m < M; ++m)
                     t[m] = tangentRegisters[std::size_t(i.a) * M + m] * factors[i.index];
+                break;
+            case Op::kLinear:
+                registers[n] = (applyLinear)(factors + i.index, registers[i.a]);
+                for (int m = 0; m < M; ++m)
+                    t[m] = (applyLinear)(factors + i.index,
+                                         tangentRegisters[std::size_t(i.a) * M + m]);
                 break;
         }
     }

@@ -83,7 +83,9 @@ TEST(FormulaProgram, TermByTermSharesPowersAndScalesByRealCoefficients) {
     // A two-sided term keeps its quaternion coefficients as products.
     const FormulaProgram twoSided =
         FormulaProgram::fromPolynomial(Formula::parse("(1+0.2i) z (1-0.1k) z + c").expand(c));
-    EXPECT_EQ(twoSided.count(Op::kMultiply), 3);
+    // A two-sided term's constants around one z make one linear map: a z b z is (L_a R_b z) z.
+    EXPECT_EQ(twoSided.count(Op::kLinear), 1);
+    EXPECT_EQ(twoSided.count(Op::kMultiply), 1);
     // The zero polynomial is the constant 0.
     const FormulaProgram zero = FormulaProgram::fromPolynomial(Polynomial{});
     EXPECT_EQ(zero.evaluate(Quaternion(1, 2, 3, 4)), Quaternion{});
@@ -108,10 +110,27 @@ TEST(FormulaProgram, RealFactorsScaleAndOnesAndZerosVanish) {
     EXPECT_EQ(compiled("1*z*1 + 0").instructions().size(), 1u);
     EXPECT_EQ(compiled("0*z^7 + c").instructions().size(), 1u);
     EXPECT_EQ(compiled("-1*z").count(Op::kNegate), 1);
-    // A quaternion factor is a product, kept on its side.
+    // Quaternion factors are linear maps on their side, composed: (L_a R_b z) z.
     const FormulaProgram twoSided = compiled("(1+0.2i) z (1-0.1k) z + c");
-    EXPECT_EQ(twoSided.count(Op::kMultiply), 3);
+    EXPECT_EQ(twoSided.count(Op::kLinear), 1);
+    EXPECT_EQ(twoSided.count(Op::kMultiply), 1);
     EXPECT_EQ(twoSided.count(Op::kScale), 0);
+}
+
+TEST(FormulaProgram, ConstantFactorsComposeIntoOneLinearMap) {
+    // i z j, scaled by 2 and by -3 and multiplied by k on the left: one map of z.
+    const Quaternion c(-0.2, 0.6, 0.2, 0.2);
+    const FormulaProgram p = compiled("k (2 (i z j) (-3)) + c", c);
+    EXPECT_EQ(p.count(Op::kLinear), 1);
+    EXPECT_EQ(p.count(Op::kScale), 0);
+    EXPECT_EQ(p.count(Op::kMultiply), 0);
+    std::mt19937 rng(13);
+    for (int n = 0; n < 10; ++n) {
+        const Quaternion z = randomQuaternion(rng, 1.5);
+        const Quaternion expected =
+            testing::kK * (2.0 * (testing::kI * z * testing::kJ) * -3.0) + c;
+        EXPECT_LT(norm(p.evaluate(z) - expected), 1e-14);
+    }
 }
 
 TEST(FormulaProgram, FoldsConstantsAndSharesEqualSubexpressions) {

@@ -131,6 +131,9 @@ struct ProgramLanes {
                         out[j] = a[j] * factor;
                     break;
                 }
+                case Op::kLinear:
+                    linear(&factors_[std::size_t(i.index)], a, out, K);
+                    break;
             }
         }
         const Q* result = r + std::size_t(program_->result()) * G;
@@ -148,6 +151,20 @@ struct ProgramLanes {
     }
 
   private:
+    // out[j] = m a[j] for `groups` groups: each row as two multiply-adds and a sum (three deep,
+    // not seven), the row's four entries loaded once for all groups.
+    static HWY_INLINE void linear(const V* m, const Q* a, Q* out, size_t groups) {
+        V rows[4][kLaneGroups];
+        for (int r = 0; r < 4; ++r) {
+            const V m0 = m[4 * r], m1 = m[4 * r + 1], m2 = m[4 * r + 2], m3 = m[4 * r + 3];
+            for (size_t j = 0; j < groups; ++j)
+                rows[r][j] =
+                    hn::MulAdd(m0, a[j].w, m1 * a[j].x) + hn::MulAdd(m2, a[j].y, m3 * a[j].z);
+        }
+        for (size_t j = 0; j < groups; ++j)
+            out[j] = Q{rows[0][j], rows[1][j], rows[2][j], rows[3][j]};
+    }
+
     std::shared_ptr<const FormulaProgram> program_;
     LaneVector<Q> constants_;
     LaneVector<V> factors_;
