@@ -55,8 +55,9 @@ struct DerivativeBoundLanes {
     bool hasEven_ = false, hasOdd_ = false;
 };
 
-// A LaneFractal's program with its constants, scale factors and P'(r) as lanes, and the
-// registers to run it in (scratch: one ProgramLanes per thread, as LaneConstants is).
+// A LaneFractal's program with its constants and real factors (scalings and linear maps' matrices)
+// as lanes, and the registers to run it in (scratch: one ProgramLanes per thread, as
+// LaneConstants is).
 template <class D>
 struct ProgramLanes {
     using V = hn::Vec<D>;
