@@ -23,6 +23,24 @@ LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
     if (std::optional<RealForm> real = polynomial.realForm(); real && lanes.degree >= 2) {
         lanes.realCoefficients = real->coefficients;
         lanes.c = {real->constant.w, real->constant.x, real->constant.y, real->constant.z};
+        if (lanes.program) {
+            // The program withComplexConstant() takes: phi fixes the real coefficients, so it is
+            // that of sum a_k z^k + phi(c), phi(c) = Re c + |Im c| i. Made once here, not for
+            // every batch of lanes.
+            const Quaternion& c = real->constant;
+            std::vector<Term> terms;
+            for (std::size_t k = 1; k < real->coefficients.size(); ++k) {
+                if (real->coefficients[k] == 0) continue;
+                Term term;
+                term.coefficients.assign(k + 1, Quaternion(1));
+                term.coefficients[0] = Quaternion(real->coefficients[k]);
+                terms.push_back(std::move(term));
+            }
+            terms.push_back(
+                Term{{Quaternion(c.w, std::sqrt(c.x * c.x + c.y * c.y + c.z * c.z), 0, 0)}});
+            lanes.complexConstantProgram = std::make_shared<const FormulaProgram>(
+                FormulaProgram::fromPolynomial(Polynomial(terms)));
+        }
     }
     auto components = [](const Quaternion& q) { return std::array<double, 4>{q.w, q.x, q.y, q.z}; };
     const Slice& slice = fractal.slice();
@@ -58,20 +76,7 @@ LaneFractal LaneFractal::withComplexConstant() const {
     for (auto& axis : rotated.axes)
         axis = rotate(axis);
     rotated.c = {c[0], length, 0, 0};
-    if (program) {
-        // phi fixes the real coefficients: the program of sum a_k z^k + phi(c).
-        std::vector<Term> terms;
-        for (std::size_t k = 1; k < realCoefficients.size(); ++k) {
-            if (realCoefficients[k] == 0) continue;
-            Term term;
-            term.coefficients.assign(k + 1, Quaternion(1));
-            term.coefficients[0] = Quaternion(realCoefficients[k]);
-            terms.push_back(std::move(term));
-        }
-        terms.push_back(Term{{Quaternion(c[0], length, 0, 0)}});
-        rotated.program = std::make_shared<const FormulaProgram>(
-            FormulaProgram::fromPolynomial(Polynomial(terms)));
-    }
+    if (program) rotated.program = complexConstantProgram;
     return rotated;
 }
 

@@ -38,6 +38,8 @@ struct LaneFractal {
     // Where every coefficient but c is real (Polynomial::realForm; power forms too): the a_k of
     // sum a_k z^k + c, c in `c`. Empty otherwise.
     std::vector<double> realCoefficients;
+    // A real form's program with c made complex, for withComplexConstant() (null otherwise).
+    std::shared_ptr<const FormulaProgram> complexConstantProgram;
     int maxIterations = 1;
     double bailoutSquared = 4, escapeRadiusSquared = 4, stepScale = 1;
     Precision precision = Precision::Single;
