@@ -10,13 +10,13 @@ binary=build/quaternia
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
-scene() {  # name, then quaternia render arguments
+scene() {  # name, then quaternia render arguments; isa=avx2 scene ... caps the lanes (--isa)
   local name=$1; shift
   # The summaries go to a file and are read after the runs: a reader started beside them (a
   # pipe into python3) would take the other core while the first render runs.
   : > "$out/runs.jsonl"
   for _ in $(seq "$runs"); do
-    "$binary" render "$@" --json -o "$out/frame.png" >> "$out/runs.jsonl"
+    "$binary" --isa "${isa:-best}" render "$@" --json -o "$out/frame.png" >> "$out/runs.jsonl"
   done
   python3 -c '
 import json, statistics, sys
@@ -46,19 +46,27 @@ scene default-1080p-16spp-adaptive --width 1920 --height 1080 --set render.sampl
   --set render.adaptive=true
 # Formulas that are not z^2 + c (issue 17), the default scene otherwise: a real form (float
 # three-number lanes), a two-sided one (a compiled program on lane quaternions) and z^3 + c with
-# c = -0.5 + 0.5i. With AVX-512 switched off: build/quaternia_bench --benchmark_filter=RenderFormula
-scene formula-z2+0.1z-1080p --width 1920 --height 1080 "${one_spp[@]}" \
-  --set 'fractal.formula=z^2 + 0.1*z + c'
-scene formula-two-sided-1080p --width 1920 --height 1080 "${one_spp[@]}" \
-  --set 'fractal.formula=(1+0.2i) z (1-0.1k) z + c'
-scene formula-z3-1080p --width 1920 --height 1080 "${one_spp[@]}" \
-  --set 'fractal.formula=z^3 + c' --set 'fractal.c=[-0.5, 0.5, 0, 0]'
+# c = -0.5 + 0.5i; then the same on AVX2 (quaternia --isa avx2), beside z^2 + c on AVX2, which is
+# what the issue's goals compare against. In-process: build/quaternia_bench
+# --benchmark_filter=RenderFormula.
+for target in best avx2; do
+  if [ "$target" = avx2 ]; then
+    isa=avx2 scene default-1080p-avx2 --width 1920 --height 1080 "${one_spp[@]}"
+  fi
+  isa=$target scene "formula-z2+0.1z-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
+    --set 'fractal.formula=z^2 + 0.1*z + c'
+  isa=$target scene "formula-two-sided-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
+    --set 'fractal.formula=(1+0.2i) z (1-0.1k) z + c'
+  isa=$target scene "formula-z3-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
+    --set 'fractal.formula=z^3 + c' --set 'fractal.c=[-0.5, 0.5, 0, 0]'
+done
 scene default-1080p-1-thread --width 1920 --height 1080 "${one_spp[@]}" --threads 1
 scene default-1080p-double --width 1920 --height 1080 "${one_spp[@]}" --set render.precision=double
 scene default-1080p-scalar --width 1920 --height 1080 "${one_spp[@]}" --set render.engine=scalar
 scene default-preview-360p --width 640 --height 360 "${one_spp[@]}"
 scene default-720p-4spp
 scene case01-shaded-1080p bench/scenes/case01_sqr_A_shaded.toml
+isa=avx2 scene case01-shaded-1080p-avx2 bench/scenes/case01_sqr_A_shaded.toml
 # Films (`quaternia animate`): the hidden-turn preset at 1 sample on 2 threads, frames per second
 # end to end (every PNG written, the process start left out) and of the render loop alone (the
 # sum of the frames' render seconds); the ratio is how much of the render speed the film keeps

@@ -6,7 +6,10 @@
 
 #include <hwy/targets.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <string>
+#include <utility>
 
 namespace quaternia {
 namespace {
@@ -71,6 +74,29 @@ TEST_F(Cli, ChoosesTheLaneTargetHighwayChooses) {
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(Json::parse(r.out)["engine"], best)
         << "Highway chooses " << best << "; quaternia said " << r.out;
+}
+
+TEST_F(Cli, IsaCapsTheLaneTarget) {
+    // --isa NAME: the best target at most NAME's (better targets have lower bits), of those the
+    // CPU supports and the build compiled; here the test's own Highway run time says which.
+    const int64_t targets = hwy::SupportedTargets() & HWY_TARGETS;
+    for (const auto& [name, cap] : {std::pair<const char*, int64_t>{"avx2", HWY_AVX2},
+                                    {"sse4", HWY_SSE4},
+                                    {"scalar", HWY_SCALAR}}) {
+        const int64_t allowed = targets & ~(cap - 1);
+        const std::string expected =
+            allowed == 0 ? hwy::TargetName(HWY_STATIC_TARGET) : hwy::TargetName(allowed & -allowed);
+        CommandResult r =
+            run(std::string("--isa ") + name + " render --json -o " + output() + kTiny);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(Json::parse(r.out)["engine"], expected) << name << ": " << r.out;
+    }
+    fs::remove(output());
+    CommandResult bad = run("--isa avx9 render -o " + output() + kTiny);
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("--isa"), std::string::npos) << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_FALSE(fs::exists(output()));
 }
 
 TEST_F(Cli, SceneFileAndOverridesApply) {

@@ -2,6 +2,7 @@
 // line on standard error and exit code 2; the library below never prints and never exits.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -9,6 +10,7 @@
 #include "cmd/cli_boundary.h"
 #include "cmd/cycles_command.h"
 #include "cmd/explore_command.h"
+#include "cmd/highway_runtime.h"
 #include "cmd/mesh_command.h"
 #include "cmd/orbit_command.h"
 #include "cmd/plane_command.h"
@@ -31,6 +33,13 @@ int main(int argc, char** argv) {
         "keys (scene file "
         "sections, or --set section.key=value):\n" +
         parameterHelp() + "\n" + presetHelp() + "\n" + costHelp());
+    std::string isa = "best";
+    app.add_option("--isa", isa,
+                   "Run the SIMD lanes on the best instruction set this CPU has up to this one "
+                   "(before the command: `quaternia --isa avx2 render ...` measures an AVX2 "
+                   "machine on an AVX-512 one); --json's engine names the one taken")
+        ->check(CLI::IsMember(laneTargetNames()))
+        ->capture_default_str();
     RenderCommandOptions renderOptions;
     addRenderCommand(app, renderOptions);
     AnimateCommandOptions animateOptions;
@@ -46,6 +55,7 @@ int main(int argc, char** argv) {
     ExploreCommandOptions exploreOptions;
     addExploreCommand(app, exploreOptions);
     if (auto code = parseCommandLine(app, argc, argv, "quaternia")) return *code;
+    limitLaneTargets(isa);
     return runAtBoundary([&] {
         if (app.got_subcommand("render")) return runRenderCommand(renderOptions);
         if (app.got_subcommand("animate")) return runAnimateCommand(animateOptions);

@@ -504,6 +504,21 @@ std::optional<RealForm> Polynomial::realForm() const {
     return form;
 }
 
+std::optional<QuadraticTerm> Polynomial::quadraticTerm() const {
+    std::optional<QuadraticTerm> form;
+    Quaternion constant;
+    for (const Term& term : terms_) {
+        if (term.degree() == 0) {
+            constant = constant + term.coefficients[0];
+            continue;
+        }
+        if (term.degree() != 2 || form) return std::nullopt;
+        form = QuadraticTerm{term.coefficients[0], term.coefficients[1], term.coefficients[2], {}};
+    }
+    if (form) form->constant = constant;
+    return form;
+}
+
 // With one top term |T(u)| = A_T exactly. With several, the terms can cancel (z i z - i z^2
 // vanishes on span{1, i}, docs/facts.md, Escape radius and bounding sphere), so a branch and bound
 // over S^3 certifies the minimum.

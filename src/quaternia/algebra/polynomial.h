@@ -33,6 +33,12 @@ struct RealForm {
     Quaternion constant;
 };
 
+// p(z) = left z middle z right + constant: a single term of degree 2 (eq. 2.10's p0 z p1 z p2).
+// The SIMD lanes conjugate it by w = middle z (render/lanes/march_lanes.h, LaneFractal).
+struct QuadraticTerm {
+    Quaternion left, middle, right, constant;
+};
+
 class Polynomial {
   public:
     Polynomial() = default;
@@ -59,6 +65,9 @@ class Polynomial {
     // The polynomial as sum_k a_k z^k + c when every coefficient of its non-constant terms is
     // real, else nullopt.
     std::optional<RealForm> realForm() const;
+    // The polynomial as left z middle z right + c when its one non-constant term has degree 2,
+    // else nullopt.
+    std::optional<QuadraticTerm> quadraticTerm() const;
 
     // m = min over unit u of |P_d(u)|, P_d the top-degree part: a certified lower bound (exact
     // for a single top term: the product of its coefficient norms). 0 when P_d may vanish on

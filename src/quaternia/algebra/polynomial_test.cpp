@@ -123,6 +123,23 @@ TEST(Polynomial, RealFormCollectsRealCoefficientsByDegree) {
     EXPECT_FALSE(compileFormula("i*z*j*z + c", c).realForm());
 }
 
+TEST(Polynomial, QuadraticTermNamesTheThreeFactorsOfItsOneTerm) {
+    const Quaternion c(-0.2, 0.6, 0.2, 0.2);
+    const Polynomial p = compileFormula("(1+0.2i) z (1-0.1k) z j + 0.5 + c", c);
+    const auto form = p.quadraticTerm();
+    ASSERT_TRUE(form);
+    EXPECT_EQ(form->constant, c + Quaternion(0.5));
+    std::mt19937 rng(9);
+    for (int n = 0; n < 20; ++n) {
+        const Quaternion z = randomQuaternion(rng, 1.5);
+        const Quaternion value = form->left * z * form->middle * z * form->right + form->constant;
+        EXPECT_LT(norm(value - p.evaluate(z)), 1e-13);
+    }
+    EXPECT_FALSE(compileFormula("z^2 + 0.1*z + c", c).quadraticTerm());
+    EXPECT_FALSE(compileFormula("z^3 + c", c).quadraticTerm());
+    EXPECT_FALSE(compileFormula("z i z + z^2 + c", c).quadraticTerm());
+}
+
 TEST(Polynomial, DetectsPowerForm) {
     const Quaternion c{-0.2, 0.6, 0.2, 0.2};
     const auto quadratic = compileFormula("z^2 + c", c).powerForm();

@@ -183,7 +183,8 @@ TEST(MarchLanes, EstimatesMatchTheScalarReference) {
 }
 
 // Formulas that are not s z^d + c: a real form (float lanes: three numbers; double: the program)
-// and a two-sided one (the program in both).
+// and single quadratic terms, which the lanes iterate conjugated by w = p1 z (LaneFractal::
+// squareMap), |p1| near 1 and far from it, with a right factor.
 Fractal formulaFractal(const char* formula) {
     Scene scene = testing::referenceScene("case01_sqr_A");
     scene.fractal.formula = formula;
@@ -193,6 +194,43 @@ Fractal formulaFractal(const char* formula) {
 TEST(MarchLanes, ProgramEstimatesMatchTheScalarReference) {
     expectEstimatesMatch(formulaFractal("z^2 + 0.1*z + c"), 5);
     expectEstimatesMatch(formulaFractal("(1+0.2i) z (1-0.1k) z + c"), 6);
+    expectEstimatesMatch(formulaFractal("(0.3+0.1j) z (1.5-1i) z (1+0.2k) + c"), 7);
+}
+
+// A single quadratic term's conjugate computes what the term computes: A(w^2) + c' at w = p1 z
+// is p1 p(z), and the slice map is followed by z -> p1 z.
+TEST(LaneFractal, SingleQuadraticTermsIterateTheirConjugate) {
+    const Fractal fractal = formulaFractal("(0.3+0.1j) z (1.5-1i) z (1+0.2k) + c");
+    const LaneFractal lanes = LaneFractal::from(fractal, Precision::Double);
+    ASSERT_TRUE(lanes.squareMap);
+    const Quaternion p1(1.5, -1, 0, 0);
+    EXPECT_NEAR(lanes.normSquaredScale, 1 / normSquared(p1), 1e-15);
+    EXPECT_NEAR(lanes.bailoutSquared,
+                normSquared(p1) * fractal.set().bailout() * fractal.set().bailout(), 1e-12);
+    for (const Quaternion& z : {Quaternion(0.3, -0.2, 0.5, 0.1), Quaternion(-1, 0.4, 0, 0.7)}) {
+        const Quaternion w = p1 * z, square = w * w;
+        const std::array<double, 4> s{square.w, square.x, square.y, square.z};
+        Quaternion mapped;
+        double* out[4] = {&mapped.w, &mapped.x, &mapped.y, &mapped.z};
+        for (int row = 0; row < 4; ++row) {
+            *out[row] = lanes.c[size_t(row)];
+            for (int column = 0; column < 4; ++column)
+                *out[row] += (*lanes.squareMap)[size_t(4 * row + column)] * s[size_t(column)];
+        }
+        const Quaternion expected = p1 * fractal.set().polynomial().evaluate(z);
+        EXPECT_LT(norm(mapped - expected), 1e-14);
+        EXPECT_LT(norm(lanes.program->evaluate(w) - expected), 1e-14);
+    }
+    const Point3d p(0.2, -0.4, 0.3);
+    const Quaternion q = p1 * fractal.slice().quaternionFromWorld(p);
+    const Quaternion viaLanes(
+        lanes.origin[0] + p.x * lanes.axes[0][0] + p.y * lanes.axes[1][0] + p.z * lanes.axes[2][0],
+        lanes.origin[1] + p.x * lanes.axes[0][1] + p.y * lanes.axes[1][1] + p.z * lanes.axes[2][1],
+        lanes.origin[2] + p.x * lanes.axes[0][2] + p.y * lanes.axes[1][2] + p.z * lanes.axes[2][2],
+        lanes.origin[3] + p.x * lanes.axes[0][3] + p.y * lanes.axes[1][3] + p.z * lanes.axes[2][3]);
+    EXPECT_LT(norm(viaLanes - q), 1e-14);
+    // Formulas of other shapes keep z.
+    EXPECT_FALSE(LaneFractal::from(formulaFractal("z^2 + 0.1*z + c"), Precision::Double).squareMap);
 }
 
 // Points just outside the set (where the renderer takes normals): the lanes' analytic gradient

@@ -20,7 +20,8 @@ struct LaneConstants {
     using V = hn::Vec<D>;
     QuaternionT<V> origin, axis0, axis1, axis2, c;
     V scale, bailoutSquared, escapeRadiusSquared, estimateRadiusSquared, stepScale, maxIterations;
-    V gainFactor;  // 4 s^2 for d = 2, s^2 d^2 otherwise
+    V gainFactor;        // 4 s^2 for d = 2, s^2 d^2 otherwise
+    V normSquaredScale;  // LaneFractal::normSquaredScale: |z|^2 from the iterate's |w|^2
     // The float loop of s z^2 + c in u = 2 s z (estimateThreeNumbers): the slice map times 2 s,
     // 2 s c (complex there: scaledC + scaledCi i), the radii squared times 4 s^2, and 1 / (4 s^2).
     QuaternionT<V> loopOrigin, loopAxis0, loopAxis1, loopAxis2;
@@ -72,10 +73,13 @@ struct LaneConstants {
         scale = hn::Set(d, T(f.scale));
         bailoutSquared = hn::Set(d, T(f.bailoutSquared));
         escapeRadiusSquared = hn::Set(d, T(f.escapeRadiusSquared));
-        estimateRadiusSquared = hn::Set(d, T(continuationRadiusSquared<T>(f.degree)));
+        // (In the iterate's scale: |w|^2 = |z|^2 / normSquaredScale.)
+        estimateRadiusSquared =
+            hn::Set(d, T(continuationRadiusSquared<T>(f.degree) / f.normSquaredScale));
         stepScale = hn::Set(d, T(f.stepScale));
         maxIterations = hn::Set(d, T(f.maxIterations));
         gainFactor = hn::Set(d, T(f.scale * f.scale * f.degree * f.degree));
+        normSquaredScale = hn::Set(d, T(f.normSquaredScale));
         const double fourScaleSquared = 4 * f.scale * f.scale;
         loopOrigin = lanes(f.origin, 2 * f.scale);
         loopAxis0 = lanes(f.axes[0], 2 * f.scale);
@@ -292,7 +296,10 @@ struct EstimateGroup {
     HWY_INLINE void finish(D d, const LaneConstants<D>& k, bool certified, int n, V iteration,
                            M live, LaneEstimate<D>& result, LaneCounters& counters) {
         const auto unfinished = hn::Not(done);  // the continuation cap ended them
-        const V radiusSquared = hn::IfThenElse(unfinished, r2, stopRadiusSquared);
+        // |z|^2 where the lanes iterate a conjugate w (LaneFractal::squareMap): the estimate is
+        // then the scalar reference's, 0.5 |z| ln|z| / |z'| (|z'| = |w'|).
+        const V radiusSquared =
+            hn::IfThenElse(unfinished, r2, stopRadiusSquared) * k.normSquaredScale;
         V derivative = hn::IfThenElse(unfinished, derivativeSquared, stopDerivativeSquared);
         counters.laneSlots += int64_t(hn::Lanes(d)) * int64_t(n - 1);
         if (!certified) {
@@ -304,7 +311,7 @@ struct EstimateGroup {
         result.inside = inside;
         result.distance =
             hn::IfThenZeroElse(inside, closingDistance(d, radiusSquared, derivative, k.stepScale));
-        result.trapSquared = trap;
+        result.trapSquared = trap * k.normSquaredScale;
         result.iterations = hn::IfThenElse(inside, k.maxIterations, stopIteration);
         result.radiusSquared = radiusSquared;
     }

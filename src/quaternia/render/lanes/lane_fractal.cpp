@@ -1,10 +1,59 @@
 // The plain-C++ side of march_lanes.h: flattening a Fractal for the lanes, and the batches.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <memory>
+#include <optional>
 
 #include "quaternia/render/lanes/march_lanes.h"
 
 namespace quaternia {
+
+namespace {
+
+std::array<double, 4> components(const Quaternion& q) {
+    return {q.w, q.x, q.y, q.z};
+}
+
+Quaternion quaternionOf(const std::array<double, 4>& a) {
+    return Quaternion(a[0], a[1], a[2], a[3]);
+}
+
+// p(z) = p0 z p1 z p2 + c iterated as w = p1 z: w <- p1 p0 z p1 z p2 + p1 c = A(w^2) + p1 c, with
+// A(s) = (p1 p0 p1^-1) s p2, one square and one 4x4 map per iterate instead of three products.
+// z -> p1 z is |p1| times a rotation of R^4, so the orbits correspond with every radius times
+// |p1|: the bailout, the escape radius and the estimate's radius scale by |p1|, and the estimate
+// takes |z|^2 = |w|^2 / |p1|^2 (normSquaredScale); escapes, iteration counts, the boundary and
+// the estimate are the scalar reference's (docs/methods.md, Single quadratic terms). The
+// derivative bound is the conjugate's, P'(r) = 2 |p0| |p2| r, which at |w| = |p1| |z| equals the
+// gain of z's, so the bound of |w'| is that of |z'| all along (Dw_n[p1 h] = p1 Dz_n[h]).
+void iterateConjugate(LaneFractal& lanes, const QuadraticTerm& term) {
+    const Quaternion& p1 = term.middle;
+    const double n2 = normSquared(p1);
+    const Quaternion left = p1 * term.left * inverse(p1);
+    std::array<double, 16> map{};
+    const Quaternion basis[4] = {Quaternion(1), kUnitI, kUnitJ, kUnitK};
+    for (int column = 0; column < 4; ++column) {
+        const std::array<double, 4> image = components(left * basis[column] * term.right);
+        for (int row = 0; row < 4; ++row)
+            map[size_t(4 * row + column)] = image[size_t(row)];
+    }
+    const Polynomial conjugate(
+        {Term{{left, Quaternion(1), term.right}}, Term{{p1 * term.constant}}});
+    lanes.squareMap = map;
+    lanes.program =
+        std::make_shared<const FormulaProgram>(FormulaProgram::fromPolynomial(conjugate));
+    lanes.derivativeBound = conjugate.derivativeNormBoundCoefficients();
+    lanes.c = components(p1 * term.constant);
+    lanes.origin = components(p1 * quaternionOf(lanes.origin));
+    for (auto& axis : lanes.axes)
+        axis = components(p1 * quaternionOf(axis));
+    lanes.bailoutSquared *= n2;
+    lanes.escapeRadiusSquared *= n2;
+    lanes.normSquaredScale = 1 / n2;
+}
+
+}  // namespace
 
 LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
     const JuliaSet& set = fractal.set();
@@ -42,7 +91,6 @@ LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
                 FormulaProgram::fromPolynomial(Polynomial(terms)));
         }
     }
-    auto components = [](const Quaternion& q) { return std::array<double, 4>{q.w, q.x, q.y, q.z}; };
     const Slice& slice = fractal.slice();
     // The slice map is affine: its value at the origin plus the images of the unit vectors.
     lanes.origin = components(slice.quaternionFromWorld(Point3d(0, 0, 0)));
@@ -53,6 +101,8 @@ LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
     lanes.escapeRadiusSquared = set.escapeRadius() * set.escapeRadius();
     lanes.stepScale = slice.stepScale();
     lanes.precision = precision;
+    if (std::optional<QuadraticTerm> term = polynomial.quadraticTerm(); term && lanes.program)
+        iterateConjugate(lanes, *term);
     return lanes;
 }
 

@@ -40,6 +40,12 @@ struct LaneFractal {
     std::vector<double> realCoefficients;
     // A real form's program with c made complex, for withComplexConstant() (null otherwise).
     std::shared_ptr<const FormulaProgram> complexConstantProgram;
+    // A single quadratic term p0 z p1 z p2 + c: the lanes iterate its conjugate by w = p1 z,
+    // w <- A(w^2) + c (c is then p1 c; `program` is A(w^2) + c's, and the slice map is followed
+    // by w = p1 z). A is the 4x4 matrix of s -> (p1 p0 p1^-1) s p2, row by row. Empty otherwise.
+    std::optional<std::array<double, 16>> squareMap;
+    // |z|^2 = normSquaredScale |w|^2 where the lanes iterate a conjugate w (1 / |p1|^2), else 1.
+    double normSquaredScale = 1;
     int maxIterations = 1;
     double bailoutSquared = 4, escapeRadiusSquared = 4, stepScale = 1;
     Precision precision = Precision::Single;

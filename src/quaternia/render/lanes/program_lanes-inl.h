@@ -66,6 +66,13 @@ struct ProgramLanes {
     ProgramLanes(D d, const LaneFractal& f) : program_(f.program) {
         using T = hn::TFromD<D>;
         if (!program_) return;
+        if (f.squareMap) {
+            squareMap_ = true;
+            for (double entry : *f.squareMap)
+                map_.push_back(hn::Set(d, T(entry)));
+            c_ = Q{hn::Set(d, T(f.c[0])), hn::Set(d, T(f.c[1])), hn::Set(d, T(f.c[2])),
+                   hn::Set(d, T(f.c[3]))};
+        }
         const std::vector<Instruction>& code = program_->instructions();
         for (const Quaternion& q : program_->constants())
             constants_.push_back(
@@ -90,6 +97,14 @@ struct ProgramLanes {
     template <size_t K>
     HWY_INLINE void step(QuaternionT<V> (&z)[K]) const {
         static_assert(K <= kLaneGroups);
+        if (squareMap_) {
+            // A(z^2) + c in registers (LaneFractal::squareMap): the program's three instructions
+            // without their trips through memory.
+            const V* m = map_.data();
+            for (size_t j = 0; j < K; ++j)
+                z[j] = mapPlusC(m, square(z[j]));
+            return;
+        }
         using Op = Instruction::Op;
         const std::vector<Instruction>& code = program_->instructions();
         Q* r = registers_.data();
@@ -145,6 +160,14 @@ struct ProgramLanes {
     // p(z) and its derivative along the three tangents h (Dp(z)[h_m], the product rule in the
     // order written), for the analytic normal.
     HWY_INLINE Q stepWithTangents(D d, const Q& z, const Q (&h)[3], Q (&derivative)[3]) const {
+        if (squareMap_) {
+            // D(A(z^2) + c)[h] = A(z h + h z).
+            const V* m = map_.data();
+            const Q zero{hn::Zero(d), hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+            for (int t = 0; t < 3; ++t)
+                derivative[t] = mapPlus(m, z * h[t] + h[t] * z, zero);
+            return mapPlusC(m, square(z));
+        }
         const Q zero{hn::Zero(d), hn::Zero(d), hn::Zero(d), hn::Zero(d)};
         return HWY_NAMESPACE::runProgramWithTangents<3>(
             program_->instructions(), program_->result(), z, h, zero, constants_.data(),
@@ -152,6 +175,17 @@ struct ProgramLanes {
     }
 
   private:
+    HWY_INLINE Q mapPlusC(const V* m, const Q& a) const { return mapPlus(m, a, c_); }
+
+    // m a + b, m a 4x4 matrix row by row: each row as two multiply-adds chains of two.
+    static HWY_INLINE Q mapPlus(const V* m, const Q& a, const Q& b) {
+        auto row = [&](int r, V add) {
+            return hn::MulAdd(m[4 * r], a.w, hn::MulAdd(m[4 * r + 1], a.x, add)) +
+                   hn::MulAdd(m[4 * r + 2], a.y, m[4 * r + 3] * a.z);
+        };
+        return Q{row(0, b.w), row(1, b.x), row(2, b.y), row(3, b.z)};
+    }
+
     // out[j] = m a[j] for `groups` groups: each row as two multiply-adds and a sum (three deep,
     // not seven), the row's four entries loaded once for all groups.
     static HWY_INLINE void linear(const V* m, const Q* a, Q* out, size_t groups) {
@@ -167,6 +201,9 @@ struct ProgramLanes {
     }
 
     std::shared_ptr<const FormulaProgram> program_;
+    bool squareMap_ = false;  // LaneFractal::squareMap: z <- A(z^2) + c, A in map_
+    LaneVector<V> map_;
+    Q c_;
     LaneVector<Q> constants_;
     LaneVector<V> factors_;
     mutable LaneVector<Q> registers_;
