@@ -72,6 +72,7 @@ struct ProgramLanes {
                 map_.push_back(hn::Set(d, T(entry)));
             c_ = Q{hn::Set(d, T(f.c[0])), hn::Set(d, T(f.c[1])), hn::Set(d, T(f.c[2])),
                    hn::Set(d, T(f.c[3]))};
+            return;  // step() and stepWithTangents() need no registers
         }
         const std::vector<Instruction>& code = program_->instructions();
         for (const Quaternion& q : program_->constants())
