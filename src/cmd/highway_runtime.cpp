@@ -88,7 +88,8 @@ namespace hwy {
 int64_t SupportedTargets() {
     // The target the code was compiled for outright stays, whatever the cap: the dispatch
     // falls back to it.
-    return (cpuTargets() & gTargetCap) | (cpuTargets() & HWY_STATIC_TARGET) | HWY_SCALAR;
+    const int64_t cpu = cpuTargets();
+    return (cpu & gTargetCap) | (cpu & HWY_STATIC_TARGET);
 }
 
 ChosenTarget& GetChosenTarget() {
