@@ -4,6 +4,7 @@
 
 #include <hwy/targets.h>
 
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -186,6 +187,21 @@ void BM_MeshDefaultScene(benchmark::State& state) {
         double(last.mesh.triangles.size()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_MeshDefaultScene)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// What each explorer query pays before it renders: the scene's fractal, for a formula whose
+// top degree has two terms (its escape radius needs the branch and bound of the top-degree part's
+// minimum, kept across queries that change only c) while c moves as a slider moves it.
+void BM_FractalFromScene(benchmark::State& state) {
+    Scene scene = defaultScene();
+    scene.fractal.formula = "z i z + 0.5 z^2 + c";
+    double x = 0;
+    for (auto _ : state) {
+        scene.fractal.c.w = -0.2 + 0.01 * std::sin(x += 0.1);
+        const Fractal fractal = Fractal::fromScene(scene);
+        benchmark::DoNotOptimize(fractal.set().escapeRadius());
+    }
+}
+BENCHMARK(BM_FractalFromScene)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 }  // namespace
 }  // namespace quaternia

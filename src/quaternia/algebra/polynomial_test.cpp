@@ -279,6 +279,21 @@ TEST(Polynomial, TopDegreeMinimumOfSeveralTermsIsCertified) {
     }
 }
 
+// The branch and bound's results are kept per top-degree part (the explorer asks again for every
+// c): each part gets its own minimum, whatever was asked before, and lower terms and c do not
+// change it.
+TEST(Polynomial, RememberedTopDegreeMinimaBelongToTheirTerms) {
+    const double first = compileFormula("2 z^2 + i z i z + c", Quaternion{0.3}).topDegreeMinimum();
+    const double other = compileFormula("3 z^2 + i z i z", Quaternion{}).topDegreeMinimum();
+    EXPECT_NEAR(first, 1, 1e-3);  // |2 - 1|
+    EXPECT_NEAR(other, 2, 2e-3);  // |3 - 1|
+    const double again = compileFormula("2 z^2 + i z i z + 0.2 z + c", Quaternion{-0.7, 0.1, 0, 0})
+                             .topDegreeMinimum();
+    EXPECT_EQ(again, first);
+    // The same terms in the other order are another key, and the same minimum.
+    EXPECT_NEAR(compileFormula("i z i z + 2 z^2", Quaternion{}).topDegreeMinimum(), first, 1e-3);
+}
+
 TEST(Polynomial, TopDegreeMinimumStaysCertifiedAtTheWorkCap) {
     // Minima on whole circles or spheres of S^3 need more cells than the cap allows: the bound
     // is then looser than 1e-3 but still below the true minimum.
