@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <string>
 
 #include "quaternia/image/mask_compare.h"
@@ -59,6 +60,10 @@ struct ProgramCase {
     const char* formula;
     Quaternion c;
 };
+// gtest names each case by its formula (not "40-byte object").
+void PrintTo(const ProgramCase& given, std::ostream* out) {
+    *out << given.formula;
+}
 class ProgramSilhouette : public ::testing::TestWithParam<ProgramCase> {};
 
 TEST_P(ProgramSilhouette, MatchesTheScalarReferenceMarcher) {
