@@ -36,7 +36,12 @@ void sendMessage(int destination, MessageTag tag, const std::vector<uint8_t>& by
 
 namespace {
 
-std::optional<Message> receiveIfReady(int source, int tag) {
+// The message's envelope may arrive before its bytes (a large one goes by rendezvous), and a
+// sender killed in between never sends them: a blocking MPI_Recv would then wait for ever, deaf to
+// the interruption that ends the job (mpirun's SIGTERM), until mpirun's SIGKILL ended the rank
+// before it removed its outputs' temporaries (Mpi.KilledRankLeavesNoPng, one run in a few).
+// So the bytes are received by polling, and an interruption gives up on them.
+std::optional<Message> receiveIfReady(int source, int tag, const std::atomic<bool>* cancel) {
     int ready = 0;
     MPI_Status status;
     MPI_Iprobe(source, tag, MPI_COMM_WORLD, &ready, &status);
@@ -47,20 +52,27 @@ std::optional<Message> receiveIfReady(int source, int tag) {
     message.source = status.MPI_SOURCE;
     message.tag = MessageTag(status.MPI_TAG);
     message.bytes.resize(size_t(count));
-    MPI_Recv(message.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG,
-             MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    return message;
+    MPI_Request request;
+    MPI_Irecv(message.bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG,
+              MPI_COMM_WORLD, &request);
+    for (;;) {
+        int received = 0;
+        MPI_Test(&request, &received, MPI_STATUS_IGNORE);
+        if (received) return message;
+        if (cancel != nullptr && cancel->load()) return std::nullopt;  // the job is ending
+        std::this_thread::yield();  // MPI_Test moves the transfer on: no sleeping in it
+    }
 }
 
 }  // namespace
 
-std::optional<Message> pollMessage() {
-    return receiveIfReady(MPI_ANY_SOURCE, MPI_ANY_TAG);
+std::optional<Message> pollMessage(const std::atomic<bool>* cancel) {
+    return receiveIfReady(MPI_ANY_SOURCE, MPI_ANY_TAG, cancel);
 }
 
 std::optional<Message> waitMessage(int source, MessageTag tag, const std::atomic<bool>* cancel) {
     for (;;) {
-        if (auto message = receiveIfReady(source, int(tag))) return message;
+        if (auto message = receiveIfReady(source, int(tag), cancel)) return message;
         if (cancel != nullptr && cancel->load()) return std::nullopt;
         std::this_thread::sleep_for(kPollInterval);
     }

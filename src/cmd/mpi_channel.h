@@ -55,8 +55,9 @@ struct Message {
 };
 
 void sendMessage(int destination, MessageTag tag, const std::vector<uint8_t>& bytes);
-// The next message from any rank with any tag if one has arrived, else nothing.
-std::optional<Message> pollMessage();
+// The next message from any rank with any tag if one has arrived, else nothing; nothing too if
+// `cancel` is set while its bytes are still coming (their sender may have died).
+std::optional<Message> pollMessage(const std::atomic<bool>* cancel);
 // Waits (sleeping between probes) for a message from `source` with `tag`; nothing if `cancel`
 // is set first.
 std::optional<Message> waitMessage(int source, MessageTag tag, const std::atomic<bool>* cancel);

@@ -155,7 +155,7 @@ std::vector<RankShare> handOutWork(const MpiSession& mpi, const WorkItems& items
     while (done < items.count || summaries < workers) {
         if (cancel != nullptr && cancel->load()) return {};
         bool busy = false;
-        while (auto message = pollMessage()) {
+        while (auto message = pollMessage(cancel)) {
             busy = true;
             if (message->tag == MessageTag::Summary) {
                 MessageReader reader(message->bytes);
