@@ -509,16 +509,12 @@ std::optional<RealForm> Polynomial::realForm() const {
 
 std::optional<QuadraticTerm> Polynomial::quadraticTerm() const {
     std::optional<QuadraticTerm> form;
-    Quaternion constant;
     for (const Term& term : terms_) {
-        if (term.degree() == 0) {
-            constant = constant + term.coefficients[0];
-            continue;
-        }
+        if (term.degree() == 0) continue;  // the constant, summed into one term (as powerForm)
         if (term.degree() != 2 || form) return std::nullopt;
         form = QuadraticTerm{term.coefficients[0], term.coefficients[1], term.coefficients[2], {}};
     }
-    if (form) form->constant = constant;
+    if (form && terms_.back().degree() == 0) form->constant = terms_.back().coefficients[0];
     return form;
 }
 
