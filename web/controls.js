@@ -1,8 +1,9 @@
 // The controls, generated from the server's parameter table (GET /api/parameters): a slider
 // and a number box per real, integer or vector component, a menu per choice, a text box per
-// text. Ranges and help come from the table; where a table range is far wider than is useful to
-// drag through (camera position: +-10000), the slider gets a narrower one and the number box
-// still takes anything the table allows.
+// text; components (fractal.c, slice.origin, slice.axes) a menu of their allowed lengths and a
+// slider per component of the length chosen. Ranges and help come from the table; where a table
+// range is far wider than is useful to drag through (camera position: +-10000), the slider gets
+// a narrower one and the number box still takes anything the table allows.
 
 // Sections and keys the page sets itself (image size, output format; [animation] belongs to the
 // timeline) or that belong to other commands (plane images, meshes, orbits and cycles).
@@ -25,6 +26,8 @@ const COMPONENT_NAMES = {
   'slice.angles': ['1i', '1j', '1k', 'ij', 'ik', 'jk'],
 };
 const VECTOR_LENGTHS = { vector2: 2, vector3: 3, vector4: 4, vector6: 6 };
+// How many components fractal.c has in each algebra (fractal.algebra).
+const ALGEBRA_DIMENSIONS = { biquaternion: 8, octonion: 8 };
 
 // A value in TOML syntax, as the server reads query parameters.
 export function tomlValue(value) {
@@ -51,6 +54,13 @@ function sliderRange(parameter) {
 }
 
 function componentNames(parameter, count) {
+  if (parameter.type === 'components') {
+    // e0 .. e7 of the algebra; grouped values (slice.axes) as axis:component.
+    const group = parameter.group || count;
+    const named = COMPONENT_NAMES[parameter.name] || [];
+    return Array.from({ length: count }, (_, i) => named[i] ??
+      (count > group ? `${Math.floor(i / group) + 1}:` : '') + 'e' + (i % group));
+  }
   if (COMPONENT_NAMES[parameter.name]) return COMPONENT_NAMES[parameter.name];
   if (parameter.name.includes('color') || parameter.name.includes('background'))
     return ['r', 'g', 'b'];
@@ -112,7 +122,9 @@ export function buildControls(container, table, state, onChange) {
     label.title = parameter.help;
     control.append(label);
     const count = VECTOR_LENGTHS[parameter.type];
-    if (count) {
+    if (parameter.type === 'components') {
+      buildComponents(control, parameter, state, onChange, updaters);
+    } else if (count) {
       const names = componentNames(parameter, count);
       for (let i = 0; i < count; ++i) {
         const widget = numberWidget(parameter, controlId(name, i), names[i], state[name][i], (v) => {
@@ -135,7 +147,14 @@ export function buildControls(container, table, state, onChange) {
         { id: controlId(name), title: parameter.help });
       for (const choice of parameter.choices) select.add(new Option(choice, choice));
       select.value = state[name];
-      select.addEventListener('change', () => { state[name] = select.value; onChange(name); });
+      select.addEventListener('change', () => {
+        state[name] = select.value;
+        // c takes as many components as the algebra has (the server checks it).
+        const c = state['fractal.c'];
+        if (name === 'fractal.algebra' && Array.isArray(c))
+          state['fractal.c'] = resized(c, ALGEBRA_DIMENSIONS[select.value] || 4);
+        onChange(name);
+      });
       control.append(select);
       updaters.push(() => { select.value = state[name]; });
     } else if (parameter.type === 'boolean') {
@@ -154,6 +173,57 @@ export function buildControls(container, table, state, onChange) {
     details.append(control);
   }
   return () => updaters.forEach((update) => update());
+}
+
+// `v` padded with zeros or cut to `length` numbers.
+function resized(v, length) {
+  return Array.from({ length }, (_, i) => (i < v.length ? v[i] : 0));
+}
+
+// A components parameter: a menu of the allowed lengths (where there are several) and a slider
+// per component, those past the value's length hidden. An empty array (slice.origin and
+// slice.axes: not given) shows no sliders. Choosing a length pads with zeros, or cuts.
+function buildComponents(control, parameter, state, onChange, updaters) {
+  const name = parameter.name;
+  const most = Math.max(...parameter.lengths);
+  let menu = null;
+  if (parameter.lengths.length > 1) {
+    menu = Object.assign(document.createElement('select'),
+      { id: controlId(name) + '-length', title: parameter.help });
+    for (const length of parameter.lengths)
+      menu.add(new Option(length ? `${length} components` : 'not given', length));
+    menu.value = state[name].length;
+    menu.addEventListener('change', () => {
+      const group = parameter.group;
+      // Axes given anew start as e0, e1, e2 (the default slice), not as zeros.
+      const axis = (_, i) => (i % group === Math.floor(i / group) ? 1 : 0);
+      state[name] = group && !state[name].length ? Array.from({ length: +menu.value }, axis)
+        : resized(state[name], +menu.value);
+      onChange(name);
+    });
+    control.append(menu);
+  }
+  const names = componentNames(parameter, most);
+  const rows = [];
+  for (let i = 0; i < most; ++i) {
+    const widget = numberWidget(parameter, controlId(name, i), names[i], state[name][i] ?? 0,
+      (v) => {
+        state[name] = state[name].slice();
+        state[name][i] = v;
+        onChange(name);
+      });
+    control.append(widget.row);
+    rows.push(widget);
+  }
+  const update = () => {
+    if (menu) menu.value = state[name].length;
+    rows.forEach((widget, i) => {
+      widget.row.hidden = i >= state[name].length;
+      if (i < state[name].length) widget.update(state[name][i]);
+    });
+  };
+  update();
+  updaters.push(update);
 }
 
 // Marks the control of `name` (or none) as the one the server refused.

@@ -232,7 +232,8 @@ function drawMap() {
   context.stroke();
   const text = c.map((v) => +v.toFixed(6));
   document.getElementById('c-value').textContent =
-    `c = ${text[0]} + ${text[1]}i + ${text[2]}j + ${text[3]}k`;
+    `c = ${text[0]} + ${text[1]}i + ${text[2]}j + ${text[3]}k` +
+    (text.length > 4 ? ` + (${text.slice(4).join(', ')})` : '');
   document.body.dataset.c = JSON.stringify(c);
 }
 
@@ -240,7 +241,9 @@ map.addEventListener('click', (e) => {
   const rect = map.getBoundingClientRect();
   const [re, im] = mapPoint((e.clientX - rect.left) * map.width / rect.width,
                             (e.clientY - rect.top) * map.height / rect.height);
-  state['fractal.c'] = [+re.toFixed(6), +im.toFixed(6), 0, 0];
+  // The other components (2 or 6, as the algebra has 4 or 8) go to 0.
+  state['fractal.c'] = [+re.toFixed(6), +im.toFixed(6)].concat(
+    new Array(state['fractal.c'].length - 2).fill(0));
   changed('fractal.c');
 });
 

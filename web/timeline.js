@@ -7,7 +7,8 @@
 import { sameValue, tomlValue } from './controls.js';
 
 const ANIMATED_SECTIONS = new Set(['fractal', 'slice', 'camera', 'shading']);
-const NUMERIC_TYPES = new Set(['real', 'integer', 'vector2', 'vector3', 'vector4', 'vector6']);
+const NUMERIC_TYPES =
+  new Set(['real', 'integer', 'vector2', 'vector3', 'vector4', 'vector6', 'components']);
 const MAX_KEYS = 64;  // ExploreLimits::maxAnimationKeys
 
 // The parameters a key stores: numbers of the view (not the image size, which is the page's).

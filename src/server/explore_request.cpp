@@ -40,9 +40,11 @@ const char* typeName(ParameterType type) {
         case ParameterType::Vector4:
             return "vector4";
         case ParameterType::Vector6:
-        default:
             return "vector6";
+        case ParameterType::Components:
+            return "components";
     }
+    return "?";
 }
 
 // Single quotes for a POSIX shell: nothing inside is special except the quote itself.
@@ -164,6 +166,9 @@ std::string parameterTableJson(const Scene& base) {
         entry["maximum"] = p.maximum;
         entry["choices"] = p.choices;
         entry["allowed"] = p.allowedIntegers;
+        // Components: the allowed lengths, and the length of a group where there are groups.
+        entry["lengths"] = p.lengths;
+        entry["group"] = p.groupLength;
         entry["help"] = p.help;
         table.push_back(std::move(entry));
     }

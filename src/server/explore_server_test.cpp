@@ -47,7 +47,8 @@ TEST_F(ExploreApi, ServesThePageAndTheParameterTable) {
     auto c = std::find_if(parameters.begin(), parameters.end(),
                           [](const Json& p) { return p["name"] == "fractal.c"; });
     ASSERT_NE(c, parameters.end());
-    EXPECT_EQ((*c)["type"], "vector4");
+    EXPECT_EQ((*c)["type"], "components");
+    EXPECT_EQ((*c)["lengths"], Json::array({4, 8}));
     EXPECT_EQ((*c)["value"], Json(defaultScene().fractal.c)) << *c;
     EXPECT_TRUE((*c)["help"].is_string());
 }

@@ -37,19 +37,36 @@ struct Track {
     std::vector<std::pair<double, ParameterValue>> steps;  // text, choices and booleans
 };
 
+std::string keyLabel(std::size_t index, const AnimationKey& key) {
+    return "animation key " + std::to_string(index + 1) + " (time " + formatValue(key.time) + ")";
+}
+
+// Throws UserError(name) where a parameter whose length may vary (fractal.c: 4 or 8) has keys of
+// different lengths: they cannot be interpolated into each other.
 std::vector<Track> tracksOf(const AnimationSettings& animation) {
     std::vector<Track> tracks;
     for (const Parameter& p : parameterTable()) {
         Track track{&p, {}, {}};
-        for (const AnimationKey& key : animation.keys) {
+        for (std::size_t i = 0; i < animation.keys.size(); ++i) {
+            const AnimationKey& key = animation.keys[i];
             for (const auto& [name, value] : key.values) {
                 if (name != p.name()) continue;
-                if (isNumeric(p))
+                if (isNumeric(p)) {
+                    std::vector<double> numbers = asNumbers(value);
+                    if (!track.numericKeys.empty() &&
+                        numbers.size() != track.numericKeys.front().value.size())
+                        throw UserError(name,
+                                        keyLabel(i, key) + ": " + name + " has " +
+                                            std::to_string(numbers.size()) +
+                                            " components, but an earlier key gives it " +
+                                            std::to_string(track.numericKeys.front().value.size()) +
+                                            "; every key of a parameter needs as many");
                     track.numericKeys.push_back(
-                        {key.time, asNumbers(value),
+                        {key.time, std::move(numbers),
                          key.interpolation.value_or(animation.interpolation), key.shortest});
-                else
+                } else {
                     track.steps.emplace_back(key.time, value);
+                }
             }
         }
         if (!track.numericKeys.empty() || !track.steps.empty()) tracks.push_back(track);
@@ -121,10 +138,12 @@ void applyShortcuts(const AnimationSettings& a, double fraction, Scene& scene) {
     if (a.cRadius != 0) {
         auto [first, second] = planeAxes(a.cPlane);
         double angle = kTau * fraction;
-        Quaternion c = scene.fractal.c;
-        c[first] += a.cRadius * std::cos(angle);
-        c[second] += a.cRadius * std::sin(angle);
-        setParameter(scene, "fractal.c", std::vector<double>{c.w, c.x, c.y, c.z});
+        // All of c's components (8 in the 8-component algebras); the plane turns two of the
+        // first 4.
+        auto c = std::get<std::vector<double>>(findParameter("fractal.c")->read(scene));
+        c[std::size_t(first)] += a.cRadius * std::cos(angle);
+        c[std::size_t(second)] += a.cRadius * std::sin(angle);
+        setParameter(scene, "fractal.c", c);
     }
 }
 
@@ -163,8 +182,7 @@ void validateAnimation(const Scene& scene) {
     const AnimationSettings& a = scene.animation;
     for (std::size_t i = 0; i < a.keys.size(); ++i) {
         const AnimationKey& key = a.keys[i];
-        std::string where =
-            "animation key " + std::to_string(i + 1) + " (time " + formatValue(key.time) + ")";
+        std::string where = keyLabel(i, key);
         if (!std::isfinite(key.time) || key.time < 0)
             throw UserError("animation.keys", where + ": time must be a number >= 0");
         if (i > 0 && !(key.time > a.keys[i - 1].time))
@@ -185,6 +203,7 @@ void validateAnimation(const Scene& scene) {
                                           "interpolation = \"step\"");
         }
     }
+    tracksOf(a);  // keys of one parameter with different lengths
     filmFrameCount(scene);
 }
 

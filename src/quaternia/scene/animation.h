@@ -27,7 +27,8 @@ int64_t filmFrameCount(const Scene& scene);
 
 // Checks every key (strictly increasing, non-negative times; known parameters outside
 // [animation]; values checked against the table; text, choices and booleans only with step
-// interpolation) and the frame count; throws a UserError naming the problem.
+// interpolation; every key of one parameter with as many components, e.g. fractal.c with 4 or
+// with 8) and the frame count; throws a UserError naming the problem.
 void validateAnimation(const Scene& scene);
 
 // The scene at `seconds` into the film, with the animation section back at its defaults (no

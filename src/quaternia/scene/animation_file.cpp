@@ -71,7 +71,7 @@ class KeyReader {
         }
         if (std::string problem = animatableProblem(name); !problem.empty()) fail(name, problem);
         const Parameter& p = *findParameter(name);
-        auto value = toParameterValue(node);
+        auto value = toParameterValue(node, &p);
         if (!value)
             fail(name, name + " must be " + describeType(p) + ", got " + describeNode(node));
         try {

@@ -168,5 +168,64 @@ TEST(Animation, BadKeysAreOneErrorNamingTheProblem) {
     EXPECT_EQ(thrownError([&] { filmFrameCount(shortcutOnly); }).key(), "animation.duration");
 }
 
+TEST(Animation, EightComponentsOfCMoveComponentByComponent) {
+    Scene film = parseScene(R"([fractal]
+algebra = "octonion"
+c = [0, 0, 0, 0, 0, 0, 0, 0]
+
+[animation]
+fps = 10
+
+[[animation.keys]]
+time = 0
+interpolation = "linear"
+"fractal.c" = [0, 0, 0, 0, 0, 0, 0, 0]
+
+[[animation.keys]]
+time = 1
+"fractal.c" = [0.2, 0, 0, 0, 0.4, 0, 0, -1]
+)");
+    validateAnimation(film);
+    Scene half = sceneAtFrame(film, 6);  // t = 0.5
+    EXPECT_EQ(half.fractal.cComponents, 8);
+    testing::expectNear(half.fractal.c, Quaternion(0.1, 0, 0, 0));
+    EXPECT_NEAR(half.fractal.cUpper[0], 0.2, 1e-12);
+    EXPECT_NEAR(half.fractal.cUpper[3], -0.5, 1e-12);
+    EXPECT_NO_THROW(validateScene(half));
+}
+
+TEST(Animation, KeysWithDifferentLengthsOfCAreAnErrorNamingIt) {
+    Scene film = parseScene(R"([animation]
+fps = 10
+
+[[animation.keys]]
+time = 0
+"fractal.c" = [0, 0, 0, 0]
+
+[[animation.keys]]
+time = 1
+"fractal.c" = [0, 0, 0, 0, 0, 0, 0, 1]
+)");
+    UserError error = thrownError([&] { validateAnimation(film); });
+    EXPECT_EQ(error.key(), "fractal.c");
+    EXPECT_STREQ(error.what(),
+                 "animation key 2 (time 1.0): fractal.c has 8 components, but an earlier key "
+                 "gives it 4; every key of a parameter needs as many");
+    EXPECT_EQ(thrownError([&] { sceneAtTime(film, 0.5); }).key(), "fractal.c");
+}
+
+TEST(Animation, CCircleKeepsTheUpperComponents) {
+    Scene film = defaultScene();
+    applyOverride(film, "fractal.algebra=octonion");
+    applyOverride(film, "fractal.c=[0, 0, 0, 0, 0.1, 0.2, 0.3, 0.4]");
+    applyOverride(film, "animation.c_radius=0.1");
+    applyOverride(film, "animation.duration=2");
+    Scene frame = sceneAtFrame(film, 16);
+    EXPECT_EQ(frame.fractal.cComponents, 8);
+    EXPECT_EQ(frame.fractal.cUpper, film.fractal.cUpper);
+    EXPECT_NEAR(std::hypot(frame.fractal.c.w, frame.fractal.c.x), 0.1, 1e-12);
+    EXPECT_NO_THROW(validateScene(frame));
+}
+
 }  // namespace
 }  // namespace quaternia

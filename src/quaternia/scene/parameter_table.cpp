@@ -131,6 +131,57 @@ Parameter vectorParameter(std::string section, std::string key, Section Scene::*
     return p;
 }
 
+// A vector of reals whose allowed lengths are `lengths` (ParameterType::Components), stored as
+// is in a std::vector<double> field; `groupLength` as Parameter::groupLength.
+template <typename Section>
+Parameter componentsParameter(std::string section, std::string key, Section Scene::*part,
+                              std::vector<double> Section::*field, std::vector<double> defaultValue,
+                              std::vector<std::size_t> lengths, double minimum, double maximum,
+                              std::string help, std::size_t groupLength = 0) {
+    Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Components,
+                                std::move(defaultValue), minimum, maximum, std::move(help));
+    p.lengths = std::move(lengths);
+    p.groupLength = groupLength;
+    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
+        (scene.*part).*field = std::get<std::vector<double>>(value);
+    };
+    p.read = [part, field](const Scene& scene) -> ParameterValue { return (scene.*part).*field; };
+    return p;
+}
+
+// fractal.c: 4 components (1, i, j, k) for the 4-component algebras, 8 for biquaternions and
+// octonions; the first 4 go to FractalSettings::c, the rest to cUpper, and cComponents records
+// how many were given so that validateScene can check them against fractal.algebra.
+Parameter constantParameter(std::string help) {
+    Parameter p = makeParameter("fractal", "c", ParameterType::Components,
+                                std::vector<double>{-0.2, 0.6, 0.2, 0.2}, -10, 10, std::move(help));
+    p.lengths = {4, 8};
+    p.apply = [](Scene& scene, const ParameterValue& value) {
+        const auto& v = std::get<std::vector<double>>(value);
+        FractalSettings& fractal = scene.fractal;
+        for (std::size_t i = 0; i < 4; ++i) {
+            fractal.c[int(i)] = v[i];
+            fractal.cUpper[i] = v.size() == 8 ? v[4 + i] : 0.0;
+        }
+        fractal.cComponents = int(v.size());
+    };
+    p.read = [](const Scene& scene) -> ParameterValue {
+        const FractalSettings& fractal = scene.fractal;
+        std::vector<double> v(fractal.cComponents == 4 ? 4 : 8);
+        for (std::size_t i = 0; i < v.size(); ++i)
+            v[i] = i < 4 ? fractal.c[int(i)] : fractal.cUpper[i - 4];
+        return v;
+    };
+    return p;
+}
+
+std::vector<std::pair<std::string, Algebra>> algebraChoices() {
+    std::vector<std::pair<std::string, Algebra>> choices;
+    for (Algebra algebra : allAlgebras())
+        choices.emplace_back(std::string(algebraName(algebra)), algebra);
+    return choices;
+}
+
 Parameter withMotion(Parameter p, Motion motion) {
     p.motion = motion;
     return p;
@@ -164,9 +215,13 @@ std::vector<Parameter> buildParameterTable() {
         textParameter("fractal", "formula", &S::fractal, &F::formula, "z^2 + c", 1, 1000,
                       "Quaternion polynomial in z iterated as z <- p(z) (eq. 2.10); c stands for "
                       "fractal.c, e.g. \"z^3 + c\" or \"i*z*j*z + c\""),
-        vectorParameter("fractal", "c", &S::fractal, &F::c, {-0.2, 0.6, 0.2, 0.2}, -10, 10,
-                        "The constant c as its (1, i, j, k) components; each c is another "
-                        "Julia set"),
+        choiceParameter("fractal", "algebra", &S::fractal, &F::algebra, "quaternion",
+                        algebraChoices(),
+                        "The algebra of z, c and the formula's constants (seed paper, section "
+                        "2.3): quaternion, bicomplex (POV-Ray's hypercomplex), coquaternion, "
+                        "biquaternion or octonion"),
+        constantParameter("The constant c as its (1, i, j, k) components, 8 of them for the "
+                          "biquaternion and octonion algebras; each c is another Julia set"),
         integerParameter("fractal", "max_iterations", &S::fractal, &F::maxIterations, 12, 1, 100000,
                          "Iterations before a point that has not escaped counts as inside; more "
                          "is finer detail and slower"),
@@ -194,6 +249,15 @@ std::vector<Parameter> buildParameterTable() {
                                    "Extra 4D rotations of the slice in degrees, in the planes "
                                    "(1,i), (1,j), (1,k), (i,j), (i,k), (j,k)"),
                    Motion::Angle),
+        componentsParameter("slice", "origin", &S::slice, &L::origin, {}, {0, 8}, -1000, 1000,
+                            "Origin of the 3D slice in the 8-component algebras (biquaternion, "
+                            "octonion): (x, y, z) stands for origin + x axes[0] + y axes[1] + "
+                            "z axes[2]; empty: 0"),
+        componentsParameter("slice", "axes", &S::slice, &L::axes, {}, {0, 24}, -1000, 1000,
+                            "Three directions of the 8-component algebra spanning the slice, "
+                            "orthonormalised in order; empty: e0, e1, e2 (the quaternion default "
+                            "slice)",
+                            8),
         // [camera]
         vectorParameter("camera", "position", &S::camera, &C::position, {1.25, 1.875, -5}, -1e4,
                         1e4, "Camera location in world space (POV-Ray's location)"),

@@ -101,8 +101,16 @@ std::size_t vectorLength(ParameterType type) {
     }
 }
 
-const char* typeName(ParameterType type) {
-    switch (type) {
+// "4 or 8": the allowed lengths of a Components parameter.
+std::string lengthsText(const std::vector<std::size_t>& lengths) {
+    std::vector<std::string> counts;
+    for (std::size_t n : lengths)
+        counts.push_back(std::to_string(n));
+    return joinAlternatives(counts);
+}
+
+std::string typeName(const Parameter& p) {
+    switch (p.type) {
         case ParameterType::Real:
             return "real";
         case ParameterType::Integer:
@@ -121,6 +129,13 @@ const char* typeName(ParameterType type) {
             return "4 reals";
         case ParameterType::Vector6:
             return "6 reals";
+        case ParameterType::Components: {
+            // "4 or 8 reals", "empty or 24 reals"
+            std::vector<std::string> counts;
+            for (std::size_t n : p.lengths)
+                counts.push_back(n == 0 ? "empty" : std::to_string(n));
+            return joinAlternatives(counts) + " reals";
+        }
     }
     return "?";
 }
@@ -246,12 +261,67 @@ std::string checkedText(const Parameter& p, const ParameterValue& value) {
 
 std::vector<double> checkedVector(const Parameter& p, const ParameterValue& value) {
     const auto* v = std::get_if<std::vector<double>>(&value);
-    if (v == nullptr || v->size() != vectorLength(p.type)) throwWrongType(p, value);
+    if (v == nullptr) throwWrongType(p, value);
+    bool allowedLength =
+        p.type == ParameterType::Components
+            ? std::find(p.lengths.begin(), p.lengths.end(), v->size()) != p.lengths.end()
+            : v->size() == vectorLength(p.type);
+    if (!allowedLength) throwWrongType(p, value);
     checkFinite(p, std::all_of(v->begin(), v->end(), [](double x) { return std::isfinite(x); }),
                 value);
     for (std::size_t i = 0; i < v->size(); ++i)
         checkRange(p, p.name() + "[" + std::to_string(i) + "]", (*v)[i], formatReal((*v)[i]));
     return *v;
+}
+
+// The 8-component algebras are sliced by slice.origin and slice.axes alone: the quaternion
+// slice's keys must keep their defaults, or a scene would say more than it draws.
+void checkSliceDefaults(const Scene& scene, const std::string& algebra) {
+    for (const char* name :
+         {"slice.normal", "slice.distance", "slice.left", "slice.right", "slice.angles"}) {
+        const Parameter& p = *findParameter(name);
+        if (p.read(scene) != p.defaultValue)
+            throw UserError(name, std::string(name) + " applies to the 4-component algebras; the " +
+                                      algebra + " algebra takes slice.origin and slice.axes");
+    }
+}
+
+// Gram-Schmidt in order: each axis less its projections on the ones before must keep at least
+// 1e-9 of its own length.
+void checkSliceAxes(const std::vector<double>& axes) {
+    if (axes.empty()) return;
+    constexpr std::size_t kDimension = 8;
+    std::vector<std::vector<double>> units;
+    for (std::size_t a = 0; a * kDimension < axes.size(); ++a) {
+        std::vector<double> v(axes.begin() + std::ptrdiff_t(a * kDimension),
+                              axes.begin() + std::ptrdiff_t((a + 1) * kDimension));
+        auto length = [](const std::vector<double>& x) {
+            double sum = 0;
+            for (double component : x)
+                sum += component * component;
+            return std::sqrt(sum);
+        };
+        const double own = length(v);
+        const std::string axis = "slice.axes: axis " + std::to_string(a + 1);
+        if (own == 0)
+            throw UserError("slice.axes",
+                            axis + " is zero; three independent directions are needed");
+        for (const auto& unit : units) {
+            double along = 0;
+            for (std::size_t k = 0; k < kDimension; ++k)
+                along += v[k] * unit[k];
+            for (std::size_t k = 0; k < kDimension; ++k)
+                v[k] -= along * unit[k];
+        }
+        const double rest = length(v);
+        if (rest < 1e-9 * own)
+            throw UserError("slice.axes", axis +
+                                              " lies in the span of the axes before it; three "
+                                              "independent directions are needed");
+        for (double& component : v)
+            component /= rest;
+        units.push_back(std::move(v));
+    }
 }
 
 }  // namespace
@@ -442,6 +512,7 @@ ParameterValue checkedValue(const Parameter& p, const ParameterValue& value) {
         case ParameterType::Vector3:
         case ParameterType::Vector4:
         case ParameterType::Vector6:
+        case ParameterType::Components:
             return checkedVector(p, value);
     }
     throwWrongType(p, value);
@@ -474,17 +545,40 @@ void validateScene(const Scene& scene) {
                                          " is zero or parallel to the view direction "
                                          "camera.look_at - camera.position");
 
+    const FractalSettings& fractal = scene.fractal;
+    const int dimension = algebraDimension(fractal.algebra);
+    const std::string algebra(algebraName(fractal.algebra));
+    if (fractal.cComponents != dimension)
+        throw UserError("fractal.c", "fractal.c has " + std::to_string(fractal.cComponents) +
+                                         " components; the " + algebra + " algebra needs " +
+                                         std::to_string(dimension));
+
     const SliceSettings& slice = scene.slice;
-    double normalLength = norm(slice.normal);
-    if (normalLength == 0) throw UserError("slice.normal", "slice.normal must not be zero");
-    // The 3D step of a marcher is the 4D distance times |s^_w| (docs/methods.md, Slices and the
-    // step factor), so a w component that is merely tiny would stall every ray; 1e-6 of the
-    // normal's length is the floor.
-    if (std::abs(slice.normal[3]) < 1e-6 * normalLength)
-        throw UserError("slice.normal",
-                        "slice.normal needs a w component (the 4th): POV-Ray's slice computes "
-                        "w = (distance - s.xyz) / s_w for each 3D point, so |s_w| must be at least "
-                        "1e-6 of the normal's length");
+    if (dimension == 8) {
+        checkSliceDefaults(scene, algebra);
+        checkSliceAxes(slice.axes);
+    } else {
+        for (const auto& [key, values] :
+             {std::pair<const char*, const std::vector<double>*>{"slice.origin", &slice.origin},
+              {"slice.axes", &slice.axes}})
+            if (!values->empty())
+                throw UserError(key, std::string(key) +
+                                         " is for the 8-component algebras (biquaternion, "
+                                         "octonion); " +
+                                         algebra +
+                                         " slices are set by slice.normal, slice.distance, "
+                                         "slice.left, slice.right and slice.angles");
+        double normalLength = norm(slice.normal);
+        if (normalLength == 0) throw UserError("slice.normal", "slice.normal must not be zero");
+        // The 3D step of a marcher is the 4D distance times |s^_w| (docs/methods.md, Slices and
+        // the step factor), so a w component that is merely tiny would stall every ray; 1e-6 of
+        // the normal's length is the floor.
+        if (std::abs(slice.normal[3]) < 1e-6 * normalLength)
+            throw UserError("slice.normal",
+                            "slice.normal needs a w component (the 4th): POV-Ray's slice computes "
+                            "w = (distance - s.xyz) / s_w for each 3D point, so |s_w| must be at "
+                            "least 1e-6 of the normal's length");
+    }
     if (normSquared(slice.left) == 0)
         throw UserError("slice.left", "slice.left must not be zero (it is made unit length)");
     if (normSquared(slice.right) == 0)
@@ -527,6 +621,20 @@ std::string describeType(const Parameter& p) {
         case ParameterType::Vector4:
         case ParameterType::Vector6:
             return "an array of " + std::to_string(vectorLength(p.type)) + " numbers";
+        case ParameterType::Components: {
+            // "an array of 4 or 8 numbers", "an empty array or an array of 24 numbers (or 3
+            // arrays of 8)".
+            std::vector<std::size_t> counts;
+            for (std::size_t n : p.lengths)
+                if (n > 0) counts.push_back(n);
+            std::string out = "an array of " + lengthsText(counts) + " numbers";
+            if (p.groupLength > 0 && counts.size() == 1 && counts[0] % p.groupLength == 0 &&
+                counts[0] > p.groupLength)
+                out += " (or " + std::to_string(counts[0] / p.groupLength) + " arrays of " +
+                       std::to_string(p.groupLength) + ")";
+            if (counts.size() < p.lengths.size()) out = "an empty array or " + out;
+            return out;
+        }
     }
     return "?";
 }
@@ -556,6 +664,7 @@ std::string describeRange(const Parameter& p) {
         case ParameterType::Vector3:
         case ParameterType::Vector4:
         case ParameterType::Vector6:
+        case ParameterType::Components:
             return "each in " + interval(p);
     }
     return "?";
@@ -577,6 +686,19 @@ std::string formatValue(const ParameterValue& value) {
     return std::visit(Formatter{}, value);
 }
 
+std::string formatParameterValue(const Parameter& p, const ParameterValue& value) {
+    const auto* v = std::get_if<std::vector<double>>(&value);
+    if (p.groupLength == 0 || v == nullptr || v->empty() || v->size() % p.groupLength != 0)
+        return formatValue(value);
+    std::string out = "[";
+    for (std::size_t start = 0; start < v->size(); start += p.groupLength) {
+        if (start > 0) out += ", ";
+        out += formatValue(std::vector<double>(v->begin() + std::ptrdiff_t(start),
+                                               v->begin() + std::ptrdiff_t(start + p.groupLength)));
+    }
+    return out + "]";
+}
+
 std::string parameterHelp() {
     std::string out =
         "Scene parameters. Set them in a scene file as `key = value` under `[section]`, or on the\n"
@@ -585,7 +707,7 @@ std::string parameterHelp() {
     std::string section;
     for (const auto& p : parameterTable()) {
         if (p.section != section) out += "\n[" + (section = p.section) + "]\n";
-        out += "  " + p.name() + " = " + formatValue(p.defaultValue) + "    (" + typeName(p.type) +
+        out += "  " + p.name() + " = " + formatValue(p.defaultValue) + "    (" + typeName(p) +
                ", " + describeRange(p) + ")\n      " + p.help + "\n";
     }
     return out;

@@ -30,7 +30,10 @@ enum class ParameterType {
     Vector2,
     Vector3,
     Vector4,
-    Vector6
+    Vector6,
+    // An array of reals whose allowed lengths are Parameter::lengths (fractal.c: 4 or 8;
+    // slice.origin: 0 or 8, empty meaning "not given").
+    Components
 };
 
 struct Parameter {
@@ -39,15 +42,20 @@ struct Parameter {
 
     ParameterType type = ParameterType::Real;
     // Canonical for the type: double for Real, int64_t for Integer, bool, std::string for Text
-    // and Choice, std::vector<double> of the right length for vectors.
+    // and Choice, std::vector<double> of the right length for vectors and components.
     ParameterValue defaultValue;
     // Inclusive bounds: of the value (Real, Integer), of each component (vectors), or of the
     // length in characters (Text). Unused for Boolean and Choice.
     double minimum = 0, maximum = 0;
     std::vector<std::string> choices;      // Choice: the allowed words, in display order
     std::vector<int64_t> allowedIntegers;  // Integer: if not empty, the only allowed values
-    std::string help;                      // one line, for --help, scene files and tooltips
-    Motion motion = Motion::Numeric;       // how an animation moves it between keys
+    // Components: the allowed numbers of components, ascending (0: the empty array).
+    std::vector<std::size_t> lengths;
+    // Components: if not 0, scene files and --set may also write the value as arrays of this
+    // many numbers each (slice.axes: three arrays of 8), which are read one after the other.
+    std::size_t groupLength = 0;
+    std::string help;                 // one line, for --help, scene files and tooltips
+    Motion motion = Motion::Numeric;  // how an animation moves it between keys
 
     // apply expects a canonical, checked value (see checkedValue); read returns one.
     std::function<void(Scene&, const ParameterValue&)> apply;
@@ -92,9 +100,14 @@ void setParameter(Scene& scene, std::string_view name, const ParameterValue& val
 
 // Checks every value against the table (for Scenes built in code) and then the conditions that
 // involve more than one value or a whole vector; throws a UserError naming the key to change.
+// Among them: fractal.c has as many components as fractal.algebra's dimension; slice.origin and
+// slice.axes are only for the 8-component algebras, which take none of slice.normal,
+// slice.distance, slice.left, slice.right and slice.angles but their defaults; slice.axes holds
+// three independent directions.
 void validateScene(const Scene& scene);
 
-// What the value must be, for messages: "an integer", "an array of 3 numbers", ...
+// What the value must be, for messages: "an integer", "an array of 3 numbers", "an array of 4
+// or 8 numbers", ...
 std::string describeType(const Parameter& parameter);
 // The allowed values, for help and comments: "[1, 16384]", "8 or 16", "\"sphere\" or ...".
 std::string describeRange(const Parameter& parameter);
@@ -102,6 +115,9 @@ std::string describeRange(const Parameter& parameter);
 // A value in TOML syntax, exactly: reals always carry a '.' or exponent (or are nan / inf) and
 // have the shortest digits that read back to the same double; strings are quoted and escaped.
 std::string formatValue(const ParameterValue& value);
+// formatValue, but a value of a parameter with a groupLength is written as arrays of that many
+// numbers ([[1.0, 0.0, ...], [...], [...]]), as scene files may write it.
+std::string formatParameterValue(const Parameter& parameter, const ParameterValue& value);
 
 // Every parameter with its type, default (in TOML syntax), allowed values and help, grouped by
 // section: the text of `quaternia render --help`.

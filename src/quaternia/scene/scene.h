@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "quaternia/algebra/hypercomplex.h"
 #include "quaternia/algebra/quaternion.h"
 #include "quaternia/algebra/vecmath.h"
 #include "quaternia/scene/interpolation.h"
@@ -26,7 +27,14 @@ using ParameterValue = std::variant<double, int64_t, bool, std::string, std::vec
 
 struct FractalSettings {
     std::string formula;  // eq. 2.10 polynomial in z; the name c stands for `c` below
-    Quaternion c;         // (1, i, j, k)
+    // The algebra z, c and the formula's constants live in (algebra/hypercomplex.h).
+    Algebra algebra = Algebra::kQuaternion;
+    Quaternion c;  // (1, i, j, k): components 0 .. 3 of c
+    // Components 4 .. 7 of c for the 8-component algebras (biquaternion, octonion); zero else.
+    std::array<double, 4> cUpper{};
+    // How many components fractal.c was given (4 or 8): validateScene checks it against the
+    // algebra's dimension, whichever of the two keys came first.
+    int cComponents = 4;
     int maxIterations = 0;
     double bailout = 0;  // |z| > bailout escapes; 0 = the polynomial's own escape radius
 };
@@ -39,6 +47,13 @@ struct SliceSettings {
     double distance = 0;
     Quaternion left, right;                 // unit quaternions
     std::array<double, 6> anglesDegrees{};  // planes 1i, 1j, 1k, ij, ik, jk
+    // The slice of the 8-component algebras: the 3D point (x, y, z) stands for
+    // origin + x axes[0] + y axes[1] + z axes[2], the axes orthonormalised in that order
+    // (Gram-Schmidt). Empty when not given: the 8-component algebras then take origin 0 and
+    // axes e0, e1, e2 (the quaternion default slice, normal k and distance 0). `axes` holds the
+    // three vectors one after the other (3 x 8 numbers).
+    std::vector<double> origin;
+    std::vector<double> axes;
 };
 
 struct CameraSettings {

@@ -73,7 +73,7 @@ void applyEntry(Scene& scene, const Entry& entry, const std::string& sourceName)
     if (p == nullptr)
         throw UserError(entry.name, at + "unknown key '" + entry.name + "' (did you mean '" +
                                         nearestParameterName(entry.name) + "'?)");
-    auto value = toParameterValue(*entry.value);
+    auto value = toParameterValue(*entry.value, p);
     if (!value)
         throw UserError(p->name(), at + p->name() + " must be " + describeType(*p) + ", got " +
                                        describeNode(*entry.value));
@@ -98,12 +98,12 @@ std::string trim(std::string_view text) {
     return std::string(text.substr(first, text.find_last_not_of(space) - first + 1));
 }
 
-// `text` read as a single TOML value, or nothing if it is not one.
-std::optional<ParameterValue> parseTomlValue(const std::string& text) {
+// `text` read as a single TOML value for `parameter` (may be null), or nothing if it is not one.
+std::optional<ParameterValue> parseTomlValue(const std::string& text, const Parameter* parameter) {
     try {
         toml::table table = toml::parse("v = " + text + "\n");
         if (table.size() != 1 || !table.contains("v")) return std::nullopt;
-        return toParameterValue(*table.get("v"));
+        return toParameterValue(*table.get("v"), parameter);
     } catch (const toml::parse_error&) {
         return std::nullopt;
     }
@@ -154,9 +154,9 @@ void applyOverride(Scene& scene, std::string_view assignment) {
     }
 
     ParameterValue value = raw;
-    if (auto parsed = parseTomlValue(raw)) {
+    const Parameter* p = findParameter(name);
+    if (auto parsed = parseTomlValue(raw, p)) {
         // "--set fractal.formula=2" means the text 2, not a type error.
-        const Parameter* p = findParameter(name);
         bool wantsText =
             p != nullptr && (p->type == ParameterType::Text || p->type == ParameterType::Choice);
         if (!wantsText || std::holds_alternative<std::string>(*parsed)) value = std::move(*parsed);
@@ -176,7 +176,7 @@ std::string sceneToToml(const Scene& scene) {
             out += "\n[" + (section = p.section) + "]\n";
         }
         out += "# " + p.help + " (" + describeRange(p) + ")\n";
-        out += p.key + " = " + formatValue(p.read(scene)) + "\n";
+        out += p.key + " = " + formatParameterValue(p, p.read(scene)) + "\n";
     }
     if (section == "animation") out += animationKeysToToml(scene.animation.keys);
     return out;

@@ -149,7 +149,8 @@ TEST(SceneFile, RejectsAValueOfTheWrongType) {
     EXPECT_EQ(error.key(), "render.width");
     EXPECT_STREQ(error.what(), "scene.toml:2:1: render.width must be an integer, got \"abc\"");
     EXPECT_STREQ(parseError("[fractal]\nc = [\"a\", 1, 2, 3]\n").what(),
-                 "scene.toml:2:1: fractal.c must be an array of 4 numbers, got [\"a\", 1, 2, 3]");
+                 "scene.toml:2:1: fractal.c must be an array of 4 or 8 numbers, got [\"a\", 1, 2, "
+                 "3]");
     EXPECT_STREQ(parseError("[camera]\nfov = 1979-05-27\n").what(),
                  "scene.toml:2:1: camera.fov must be a number, got a date");
     EXPECT_STREQ(parseError("[camera]\nup = { x = 1 }\n").what(),
@@ -278,6 +279,115 @@ TEST(SceneFileToToml, WritesEveryKeyWithItsHelpUnderItsSection) {
     EXPECT_LT(toml.find("[camera]"), toml.find("[render]"));
     EXPECT_LT(toml.find("[render]"), toml.find("\nwidth = 1280\n"));
     EXPECT_LT(toml.find("\nwidth = 1280\n"), toml.find("[shading]"));
+}
+
+// ---- Issue 16: the algebra, c of 8 components and the slice of the 8-component algebras ----
+
+constexpr const char* kOctonionScene = R"([fractal]
+algebra = "octonion"
+c = [-0.2, 0.6, 0.2, 0.2, 0.1, -0.3, 0.05, 0.4]
+
+[slice]
+origin = [0, 0, 0, 0.5, 0, 0, 0, -0.25]
+)";
+
+const std::vector<double> kFlatAxes = {1,   0, 0, 0, 0, 0, 0, 0,  //
+                                       0.5, 1, 0, 0, 0, 0, 0, 0,  //
+                                       0,   0, 0, 0, 1, 0, 0, 2};
+
+TEST(SceneFile, ReadsAnOctonionScene) {
+    Scene s = parseScene(kOctonionScene);
+    EXPECT_EQ(s.fractal.algebra, Algebra::kOctonion);
+    EXPECT_EQ(s.fractal.cComponents, 8);
+    EXPECT_EQ(s.fractal.c, Quaternion(-0.2, 0.6, 0.2, 0.2));
+    EXPECT_EQ(s.fractal.cUpper, (std::array<double, 4>{0.1, -0.3, 0.05, 0.4}));
+    EXPECT_EQ(s.slice.origin, (std::vector<double>{0, 0, 0, 0.5, 0, 0, 0, -0.25}));
+    EXPECT_TRUE(s.slice.axes.empty());
+    EXPECT_NO_THROW(validateScene(s));
+}
+
+TEST(SceneFile, ReadsSliceAxesNestedOrFlatAlike) {
+    const std::string nested = std::string(kOctonionScene) +
+                               "axes = [[1, 0, 0, 0, 0, 0, 0, 0], [0.5, 1, 0, 0, 0, 0, 0, 0], "
+                               "[0, 0, 0, 0, 1, 0, 0, 2]]\n";
+    const std::string flat =
+        std::string(kOctonionScene) +
+        "axes = [1, 0, 0, 0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 2]\n";
+    EXPECT_EQ(parseScene(nested).slice.axes, kFlatAxes);
+    EXPECT_EQ(parseScene(flat).slice.axes, kFlatAxes);
+    EXPECT_EQ(parseScene(std::string(kOctonionScene) + "axes = []\n").slice.axes,
+              std::vector<double>{});
+}
+
+TEST(SceneFile, RejectsSliceAxesOfTheWrongShape) {
+    // Arrays of 8 numbers each, three of them; nested arrays are for slice.axes alone.
+    UserError error = parseError("[slice]\naxes = [[1, 0], [0, 1], [1, 1]]\n");
+    EXPECT_EQ(error.key(), "slice.axes");
+    EXPECT_STREQ(error.what(),
+                 "scene.toml:2:1: slice.axes must be an empty array or an array of 24 numbers (or "
+                 "3 arrays of 8), got [[1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]");
+    error = parseError("[slice]\naxes = [[1, 0, 0, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0, 0, 0]]\n");
+    EXPECT_EQ(error.key(), "slice.axes");
+    EXPECT_NE(std::string(error.what()).find("must be an empty array or an array of 24 numbers"),
+              std::string::npos)
+        << error.what();
+    EXPECT_EQ(parseError("[slice]\naxes = [[1, 0, 0, 0, 0, 0, 0, 0], 1]\n").key(), "slice.axes");
+    error = parseError("[fractal]\nc = [[1, 2], [3, 4]]\n");
+    EXPECT_EQ(error.key(), "fractal.c");
+    EXPECT_STREQ(error.what(),
+                 "scene.toml:2:1: fractal.c must be an array of 4 or 8 numbers, got [[1.0, 2.0], "
+                 "[3.0, 4.0]]");
+    EXPECT_STREQ(parseError("[fractal]\nalgebra = \"sedenion\"\n").what(),
+                 "scene.toml:2:1: fractal.algebra must be \"quaternion\", \"bicomplex\", "
+                 "\"coquaternion\", \"biquaternion\" or \"octonion\", got \"sedenion\"");
+}
+
+TEST(SceneFileOverride, ReadsTheAlgebraAndSliceAxesNestedOrFlat) {
+    Scene s = defaultScene();
+    applyOverride(s, "fractal.algebra=biquaternion");
+    applyOverride(s, "fractal.c=[0, 1, 0, 0, 0, 0, 0, 0.5]");
+    applyOverride(s,
+                  "slice.axes=[[1, 0, 0, 0, 0, 0, 0, 0], [0.5, 1, 0, 0, 0, 0, 0, 0], "
+                  "[0, 0, 0, 0, 1, 0, 0, 2]]");
+    EXPECT_EQ(s.fractal.algebra, Algebra::kBiquaternion);
+    EXPECT_EQ(s.fractal.cComponents, 8);
+    EXPECT_EQ(s.slice.axes, kFlatAxes);
+    EXPECT_NO_THROW(validateScene(s));
+    applyOverride(s, "slice.axes=[]");
+    EXPECT_TRUE(s.slice.axes.empty());
+    applyOverride(s,
+                  "slice.axes=[1, 0, 0, 0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, "
+                  "1, 0, 0, 2]");
+    EXPECT_EQ(s.slice.axes, kFlatAxes);
+    UserError error = overrideError("slice.axes=[[1, 0], [0, 1], [1, 1]]");
+    EXPECT_EQ(error.key(), "slice.axes");
+    EXPECT_STREQ(overrideError("fractal.c=[1, 2, 3, 4, 5]").what(),
+                 "fractal.c must be an array of 4 or 8 numbers, got [1.0, 2.0, 3.0, 4.0, 5.0]");
+}
+
+TEST(SceneFileToToml, RoundTripsAnOctonionSceneExactly) {
+    Scene s = parseScene(kOctonionScene);
+    setParameter(s, "fractal.c",
+                 std::vector<double>{0.1 + 0.2, 1.0 / 3, -2.0 / 7, 1e-300, -9.5, 1.0 / 7, 0, -0.0});
+    std::vector<double> axes = kFlatAxes;
+    axes[17] = 1.0 / 3;
+    setParameter(s, "slice.axes", axes);
+    ASSERT_NO_THROW(validateScene(s));
+    std::string toml = sceneToToml(s);
+    EXPECT_NE(toml.find("\nalgebra = \"octonion\"\n"), std::string::npos) << toml;
+    // The axes are written as three arrays of 8.
+    EXPECT_NE(toml.find("\naxes = [[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0], [0.5, 1.0, "),
+              std::string::npos)
+        << toml;
+    Scene again = parseScene(toml);
+    expectSameScene(again, s);
+    EXPECT_EQ(again.fractal.algebra, Algebra::kOctonion);
+    EXPECT_EQ(again.fractal.cUpper, s.fractal.cUpper);
+    EXPECT_EQ(again.fractal.cComponents, 8);
+    EXPECT_EQ(again.slice.origin, s.slice.origin);
+    EXPECT_EQ(again.slice.axes, axes);
+    EXPECT_NO_THROW(validateScene(again));
+    EXPECT_EQ(sceneToToml(again), toml);
 }
 
 }  // namespace

@@ -1,14 +1,30 @@
 #include "quaternia/scene/toml_values.h"
 
 #include <utility>
+#include <vector>
 
 #include "quaternia/scene/parameters.h"
 
 namespace quaternia {
 
-// Integers, floats, booleans, strings and arrays of numbers (integers and floats mixed, read
-// as reals); nothing for tables, dates, times and other arrays.
-std::optional<ParameterValue> toParameterValue(const toml::node& node) {
+namespace {
+
+// The numbers of an array of numbers, appended to `numbers`; false if an element is not one.
+bool appendNumbers(const toml::array& array, std::vector<double>& numbers) {
+    for (const auto& element : array) {
+        if (const auto* integer = element.as_integer())
+            numbers.push_back(double(integer->get()));
+        else if (const auto* real = element.as_floating_point())
+            numbers.push_back(real->get());
+        else
+            return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::optional<ParameterValue> toParameterValue(const toml::node& node, const Parameter* parameter) {
     // Built in place: moving a variant temporary into the optional trips GCC 12's
     // -Wmaybe-uninitialized false positive in optimised sanitizer builds.
     auto value = [](auto&& x) {
@@ -20,12 +36,14 @@ std::optional<ParameterValue> toParameterValue(const toml::node& node) {
     if (const auto* text = node.as_string()) return value(std::string(text->get()));
     if (const auto* array = node.as_array()) {
         std::vector<double> numbers;
+        if (appendNumbers(*array, numbers)) return value(std::move(numbers));
+        // Arrays of groupLength numbers each ([[a0 .. a7], [b0 .. b7], [c0 .. c7]]), flattened.
+        const std::size_t group = parameter != nullptr ? parameter->groupLength : 0;
+        if (group == 0) return std::nullopt;
+        numbers.clear();
         for (const auto& element : *array) {
-            if (const auto* integer = element.as_integer())
-                numbers.push_back(double(integer->get()));
-            else if (const auto* real = element.as_floating_point())
-                numbers.push_back(real->get());
-            else
+            const auto* inner = element.as_array();
+            if (inner == nullptr || inner->size() != group || !appendNumbers(*inner, numbers))
                 return std::nullopt;
         }
         return value(std::move(numbers));

@@ -11,9 +11,14 @@
 
 namespace quaternia {
 
+struct Parameter;
+
 // Integers, floats, booleans, strings and arrays of numbers (integers and floats mixed, read
-// as reals); nothing for tables, dates, times and other arrays.
-std::optional<ParameterValue> toParameterValue(const toml::node& node);
+// as reals); nothing for tables, dates, times and other arrays. For a `parameter` with a
+// groupLength (slice.axes), an array of arrays of exactly that many numbers each is read too,
+// as the numbers one after the other.
+std::optional<ParameterValue> toParameterValue(const toml::node& node,
+                                               const Parameter* parameter = nullptr);
 
 // What a value that toParameterValue could not read was, for messages.
 std::string describeNode(const toml::node& node);
