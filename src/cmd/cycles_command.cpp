@@ -118,6 +118,7 @@ void addCyclesCommand(CLI::App& app, CyclesCommandOptions& options) {
 int runCyclesCommand(const CyclesCommandOptions& options) {
     Scene scene = sceneFromOptions(options);
     applyMapFlags(scene, options.map);
+    requireQuaternionAlgebra(scene, "cycles");
     if (options.period) setFromFlag(scene, "--period", "cycles.period", *options.period);
     ComplexRestriction map = complexMap(scene, formulaName(options.map));
     checkPeriod(scene.cycles.period, map.polynomial.degree(),

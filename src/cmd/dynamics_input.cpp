@@ -28,6 +28,15 @@ std::vector<double> quaternionValue(const Quaternion& q) {
     return {q.w, q.x, q.y, q.z};
 }
 
+void requireQuaternionAlgebra(const Scene& scene, const std::string& command) {
+    if (scene.fractal.algebra == Algebra::kQuaternion) return;
+    throw UserError("fractal.algebra",
+                    "fractal.algebra = \"" + std::string(algebraName(scene.fractal.algebra)) +
+                        "\": `quaternia " + command +
+                        "` works in the quaternions only so far; render and mesh take every "
+                        "algebra");
+}
+
 Polynomial compileMap(const std::string& formula, const Quaternion& c, const std::string& name) {
     Polynomial p = compileFormula(formula, c, name);
     try {

@@ -32,6 +32,11 @@ std::string formulaName(const MapFlags& flags);
 // q as the table's (1, i, j, k) vector, for setParameter.
 std::vector<double> quaternionValue(const Quaternion& q);
 
+// The dynamics commands (orbit, cycles, plane) work in the quaternions and their complex planes
+// so far: a scene in another algebra (fractal.algebra, issue 16) is refused with a UserError
+// naming fractal.algebra rather than silently read as quaternions.
+void requireQuaternionAlgebra(const Scene& scene, const std::string& command);
+
 // The map `formula` with c substituted. Throws UserError naming `name` (formulaName) when it
 // does not parse, or when it has no escape radius (degree below 2, or possibly unbounded).
 Polynomial compileMap(const std::string& formula, const Quaternion& c, const std::string& name);

@@ -162,6 +162,7 @@ void addOrbitCommand(CLI::App& app, OrbitCommandOptions& options) {
 
 int runOrbitCommand(const OrbitCommandOptions& options) {
     Scene scene = orbitScene(options);
+    requireQuaternionAlgebra(scene, "orbit");
     Polynomial p = compileMap(scene.fractal.formula, scene.fractal.c, formulaName(options.map));
     OrbitOptions orbitOptions;
     orbitOptions.maxIterations = scene.orbit.maxIterations;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "cmd/dynamics_input.h"
 #include "quaternia/dynamics/connectedness.h"
 #include "quaternia/image/png_io.h"
 #include "quaternia/plane/plane_render.h"
@@ -73,6 +74,7 @@ int runPlaneCommand(const PlaneCommandOptions& options) {
     Scene scene = sceneFromOptions(options);
     // Every check that can fail runs before the work, the output path included.
     validatePlaneScene(scene);
+    requireQuaternionAlgebra(scene, "plane");
     const std::string note = connectednessNote(scene);
     requireImageMemory(scene, planeMemoryBytes(scene), options, "the image");
     AtomicFile output(options.output);

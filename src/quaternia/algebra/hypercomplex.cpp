@@ -123,6 +123,7 @@ const MultiplicationTable& MultiplicationTable::of(Algebra algebra) {
                     }
                     break;
             }
+            t.index();
             return t;
         };
         return std::array<MultiplicationTable, kAlgebras.size()>{
@@ -132,16 +133,31 @@ const MultiplicationTable& MultiplicationTable::of(Algebra algebra) {
     return tables[static_cast<size_t>(algebra)];
 }
 
-Hypercomplex MultiplicationTable::multiply(const Hypercomplex& a, const Hypercomplex& b) const {
-    Hypercomplex product{};
+void MultiplicationTable::index() {
     for (int i = 0; i < dimension_; ++i) {
-        if (a[i] == 0) continue;
         for (int j = 0; j < dimension_; ++j) {
             const BasisProduct e = products_[i][j];
-            product[e.index] += e.sign * (a[i] * b[j]);
+            outputPartner_[e.index][i] = std::int8_t(j);
+            outputSign_[e.index][i] = e.sign;
         }
     }
+}
+
+template <int Dimension>
+Hypercomplex MultiplicationTable::multiplyFixed(const Hypercomplex& a,
+                                                const Hypercomplex& b) const {
+    Hypercomplex product{};
+    for (int k = 0; k < Dimension; ++k) {
+        double sum = 0;
+        for (int i = 0; i < Dimension; ++i)
+            sum += outputSign_[k][i] * (a[i] * b[outputPartner_[k][i]]);
+        product[k] = sum;
+    }
     return product;
+}
+
+Hypercomplex MultiplicationTable::multiply(const Hypercomplex& a, const Hypercomplex& b) const {
+    return dimension_ == 4 ? multiplyFixed<4>(a, b) : multiplyFixed<8>(a, b);
 }
 
 Hypercomplex MultiplicationTable::power(const Hypercomplex& z, int n) const {

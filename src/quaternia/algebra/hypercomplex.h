@@ -69,6 +69,15 @@ class MultiplicationTable {
     Algebra algebra_;
     int dimension_;
     std::array<std::array<BasisProduct, kMaxAlgebraDimension>, kMaxAlgebraDimension> products_{};
+    // The same table by output: component k of a b is sum_i outputSign_[k][i] a_i
+    // b_outputPartner_[k][i] (each e_i has one partner e_j with e_i e_j = +-e_k), a loop of
+    // dimension^2 multiply-adds without scattered writes (filled by index()).
+    std::array<std::array<std::int8_t, kMaxAlgebraDimension>, kMaxAlgebraDimension>
+        outputPartner_{};
+    std::array<std::array<double, kMaxAlgebraDimension>, kMaxAlgebraDimension> outputSign_{};
+    void index();
+    template <int Dimension>
+    Hypercomplex multiplyFixed(const Hypercomplex& a, const Hypercomplex& b) const;
 };
 
 int algebraDimension(Algebra algebra);

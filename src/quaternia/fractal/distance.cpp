@@ -65,13 +65,8 @@ DistanceEstimate estimateWith(const Map& map, const IterationLimits& limits, con
     double trap2 = r2;
     int n = 0;  // z = z_n; the iterates z_0 .. z_{N-1} are tested
     while (r2 <= limits.bailoutSquared) {
-        if (n + 1 >= limits.maxIterations) {
-            result.inside = true;
-            result.trap = std::sqrt(trap2);
-            result.escapeIteration = result.iterations = limits.maxIterations;
-            result.smoothIteration = limits.maxIterations;
-            return result;
-        }
+        if (n + 1 >= limits.maxIterations)
+            return insideEstimate(std::sqrt(trap2), limits.maxIterations);
         derivativeSquared *= map.gainSquared(r2);
         z = map(z);
         r2 = normSquared(z);

@@ -50,6 +50,16 @@ double continuationRadiusSquared(int degree) {
                     std::pow(largest, 1.0 / std::max(1, degree)));
 }
 
+// The estimate of a point of K_N whose orbit came no nearer the origin than `trap`.
+inline DistanceEstimate insideEstimate(double trap, int maxIterations) {
+    DistanceEstimate result;
+    result.inside = true;
+    result.trap = trap;
+    result.escapeIteration = result.iterations = maxIterations;
+    result.smoothIteration = maxIterations;
+    return result;
+}
+
 // The highest degree d of s z^d + c that the SIMD lanes take (LaneFractal::from); higher
 // degrees use the scalar path.
 inline constexpr int kMaxLaneDegree = 16;

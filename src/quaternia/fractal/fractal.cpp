@@ -5,6 +5,8 @@
 namespace quaternia {
 
 Fractal Fractal::fromScene(const Scene& scene) {
+    if (scene.fractal.algebra != Algebra::kQuaternion)
+        return Fractal(hypercomplexFractalFromScene(scene));
     Polynomial polynomial = compileFormula(scene.fractal.formula, scene.fractal.c);
     // The lanes' program from the formula as written (parsed again: it parsed above).
     auto program = std::make_shared<const FormulaProgram>(
@@ -15,13 +17,42 @@ Fractal Fractal::fromScene(const Scene& scene) {
 }
 
 DistanceEstimate Fractal::estimate(const Point3d& p) const {
-    DistanceEstimate e = set_.estimate(slice_.quaternionFromWorld(p));
-    e.distance *= slice_.stepScale();
+    if (hypercomplex_) {
+        DistanceEstimate e = hypercomplex_->set.estimate(hypercomplex_->slice.fromWorld(p));
+        e.distance /= hypercomplex_->slice.stretch();
+        return e;
+    }
+    DistanceEstimate e = set_->estimate(slice_->quaternionFromWorld(p));
+    e.distance *= slice_->stepScale();
     return e;
 }
 
+bool Fractal::contains(const Point3d& p) const {
+    if (hypercomplex_) return hypercomplex_->set.contains(hypercomplex_->slice.fromWorld(p));
+    return set_->contains(slice_->quaternionFromWorld(p));
+}
+
+double Fractal::boundingRadius() const {
+    if (hypercomplex_)
+        return hypercomplex_->slice.boundingRadius(hypercomplex_->set.boundingRadius());
+    return set_->boundingRadius();
+}
+
+DistanceKind Fractal::distanceKind() const {
+    return hypercomplex_ ? hypercomplex_->set.distanceKind() : DistanceKind::kEstimate;
+}
+
+double Fractal::escapeRadius() const {
+    return hypercomplex_ ? hypercomplex_->set.escapeRadius() : set_->escapeRadius();
+}
+
 Vector3d Fractal::normal(const Point3d& p) const {
-    auto g = set_.potentialGradient(slice_.quaternionFromWorld(p), slice_.tangents());
+    if (hypercomplex_) {
+        const HypercomplexSlice& slice = hypercomplex_->slice;
+        auto g = hypercomplex_->set.potentialGradient(slice.fromWorld(p), slice.tangents());
+        return normalOrOutward(Vector3d(g[0], g[1], g[2]), p);
+    }
+    auto g = set_->potentialGradient(slice_->quaternionFromWorld(p), slice_->tangents());
     return normalOrOutward(Vector3d(g[0], g[1], g[2]), p);
 }
 
@@ -37,16 +68,23 @@ Vector3d normalOrOutward(const Vector3d& g, const Point3d& p) {
 Vector3d Fractal::normalByDifferences(const Point3d& p, double h) const {
     // The potential's level sets are what the analytic normal differentiates: ln|z_M| with M
     // fixed at the point itself (the estimate's own gradient differs by that of ln|z'_M|).
-    const int iterations = set_.gradientIterations(slice_.quaternionFromWorld(p));
-    Vector3d g;
-    for (int axis = 0; axis < 3; ++axis) {
-        Point3d plus = p, minus = p;
-        plus[axis] += h;
-        minus[axis] -= h;
-        g[axis] = set_.logRadiusAfter(slice_.quaternionFromWorld(plus), iterations) -
-                  set_.logRadiusAfter(slice_.quaternionFromWorld(minus), iterations);
+    auto differences = [&](const auto& set, const auto& toAlgebra) {
+        const int iterations = set.gradientIterations(toAlgebra(p));
+        Vector3d g;
+        for (int axis = 0; axis < 3; ++axis) {
+            Point3d plus = p, minus = p;
+            plus[axis] += h;
+            minus[axis] -= h;
+            g[axis] = set.logRadiusAfter(toAlgebra(plus), iterations) -
+                      set.logRadiusAfter(toAlgebra(minus), iterations);
+        }
+        return normalize(g);
+    };
+    if (hypercomplex_) {
+        return differences(hypercomplex_->set,
+                           [&](const Point3d& q) { return hypercomplex_->slice.fromWorld(q); });
     }
-    return normalize(g);
+    return differences(*set_, [&](const Point3d& q) { return slice_->quaternionFromWorld(q); });
 }
 
 }  // namespace quaternia

@@ -1,10 +1,15 @@
-// The rendered object: a quaternion Julia set seen through a 3D slice. This is the distance
-// field every consumer shares (the marchers, shading, the mesher and the explorer): it
-// answers in 3D world coordinates, with distances already made safe for 3D steps.
+// The rendered object: a Julia set seen through a 3D slice, in the quaternions (JuliaSet, the
+// fast paths) or another algebra of section 2.3 (hypercomplex_julia.h, the scalar reference).
+// This is the distance field every consumer shares (the marchers, shading, the mesher and the
+// explorer): it answers in 3D world coordinates, with distances already made safe for 3D steps.
 #pragma once
+
+#include <memory>
+#include <optional>
 
 #include "quaternia/algebra/vecmath.h"
 #include "quaternia/fractal/distance.h"
+#include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/fractal/slice.h"
 #include "quaternia/scene/scene.h"
 
@@ -17,13 +22,26 @@ Vector3d normalOrOutward(const Vector3d& g, const Point3d& p);
 class Fractal {
   public:
     Fractal(JuliaSet set, Slice slice) : set_(std::move(set)), slice_(slice) {}
-    // Compiles fractal.formula with fractal.c; throws UserError naming the bad key.
+    explicit Fractal(std::shared_ptr<const HypercomplexFractal> other)
+        : hypercomplex_(std::move(other)) {}
+    // Compiles fractal.formula with fractal.c in fractal.algebra; throws UserError naming the
+    // bad key.
     static Fractal fromScene(const Scene& scene);
+
+    // Whether the set lives in an algebra other than the quaternions (then set() and slice()
+    // must not be called: only the scalar reference paths, which use the members below, apply).
+    bool isQuaternion() const { return hypercomplex_ == nullptr; }
+    const HypercomplexFractal* hypercomplex() const { return hypercomplex_.get(); }
+    // What estimate() returns: an estimate to march by, or a proven but short distance that the
+    // renderer combines with Algorithm 2's fixed steps.
+    DistanceKind distanceKind() const;
+    // Where orbits surely escape (the bailout where no radius is certain).
+    double escapeRadius() const;
 
     // The 4D estimate at quaternionFromWorld(p), its distance scaled by the slice's step scale
     // so that a 3D step of that length cannot cross the set.
     DistanceEstimate estimate(const Point3d& p) const;
-    bool contains(const Point3d& p) const { return set_.contains(slice_.quaternionFromWorld(p)); }
+    bool contains(const Point3d& p) const;
     // Unit outward normal from the analytic Jacobian (one pass, docs/methods.md, Normals).
     Vector3d normal(const Point3d& p) const;
     // Unit normal from central differences of the potential ln|z_M|, step h: the simple
@@ -31,13 +49,14 @@ class Fractal {
     Vector3d normalByDifferences(const Point3d& p, double h) const;
 
     // The object lies in the ball of this radius about the origin: |p| <= |s(p)| = |L s(p) R|.
-    double boundingRadius() const { return set_.boundingRadius(); }
-    const JuliaSet& set() const { return set_; }
-    const Slice& slice() const { return slice_; }
+    double boundingRadius() const;
+    const JuliaSet& set() const { return *set_; }
+    const Slice& slice() const { return *slice_; }
 
   private:
-    JuliaSet set_;
-    Slice slice_;
+    std::optional<JuliaSet> set_;
+    std::optional<Slice> slice_;
+    std::shared_ptr<const HypercomplexFractal> hypercomplex_;
 };
 
 }  // namespace quaternia

@@ -11,7 +11,7 @@ namespace {
 using namespace quaternia::testing;
 
 SliceSettings defaultSlice() {
-    return SliceSettings{Quaternion(0, 0, 0, 1), 0, Quaternion(1), Quaternion(1), {}};
+    return SliceSettings{Quaternion(0, 0, 0, 1), 0, Quaternion(1), Quaternion(1), {}, {}, {}};
 }
 
 TEST(Slice, DefaultSliceEmbedsXyzAsOneIJ) {

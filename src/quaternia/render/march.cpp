@@ -64,10 +64,22 @@ MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSe
     auto interval = intersectSphere(ray, fractal.boundingRadius());
     if (!interval) return result;
     double tOutside = interval->tNear;
-    for (double t = interval->tNear; t <= interval->tFar && result.steps < settings.maxSteps;
-         t += settings.step) {
+    // Where the fractal's distance is a proven lower bound (DistanceKind::kLipschitz), a sample
+    // outside skips ahead by that distance when it exceeds the step: nothing lies within it.
+    const bool skip = fractal.distanceKind() == DistanceKind::kLipschitz;
+    for (double t = interval->tNear, advance = settings.step;
+         t <= interval->tFar && result.steps < settings.maxSteps; t += advance) {
         ++result.steps;
-        if (!fractal.contains(ray.at(t))) {
+        bool inside;
+        if (skip) {
+            const DistanceEstimate e = fractal.estimate(ray.at(t));
+            result.iterations += e.iterations;
+            inside = e.inside;
+            advance = std::max(settings.step, e.distance);
+        } else {
+            inside = fractal.contains(ray.at(t));
+        }
+        if (!inside) {
             tOutside = t;
             continue;
         }

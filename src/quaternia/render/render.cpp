@@ -181,8 +181,13 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
     : fractal_(Fractal::fromScene(scene)),
       camera_(scene.camera, scene.render.width, scene.render.height),
       shader_(scene.shading, fractal_),
-      march_{scene.render.method,         scene.render.step,     scene.render.epsilon,
-             camera_.pixelFootprint(1.0), scene.render.maxSteps, scene.render.relaxation},
+      march_{fractal_.distanceKind() == DistanceKind::kLipschitz ? MarchMethod::FixedStep
+                                                                 : scene.render.method,
+             scene.render.step,
+             scene.render.epsilon,
+             camera_.pixelFootprint(1.0),
+             scene.render.maxSteps,
+             scene.render.relaxation},
       samples_(scene.render.samples),
       adaptive_(scene.render.adaptive && scene.render.samples > 1),
       opaque_(scene.render.alpha == AlphaMode::Opaque),
@@ -199,7 +204,9 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
       windowY0_(window.y0),
       result_(result),
       rows_(result, rendersSamples(scene.render, options), window.x0, window.y0) {
-    if (scene.render.engine == RenderEngine::Simd &&
+    // The lanes take the quaternions; the other algebras run the scalar reference, by fixed
+    // steps where their distance is only a short proven bound (hypercomplex_julia.h).
+    if (scene.render.engine == RenderEngine::Simd && fractal_.isQuaternion() &&
         scene.render.method == MarchMethod::SphereTracing)
         lanes_ = LaneFractal::from(fractal_, scene.render.precision);
     shader_.toDisplay(&backgroundDisplay_, 1);

@@ -45,6 +45,8 @@ class Shader {
                        Rgba* out) const;
     // Visibility of the key light from p in [0, 1] (1 = lit).
     double shadow(const Point3d& p, ShadingStats& stats) const;
+    // shadow() for sets whose distance is a Lipschitz bound (Fractal::distanceKind): hard.
+    double lipschitzShadow(const Ray& ray, const RayInterval& interval, ShadingStats& stats) const;
     // 1 = open, 0 = fully occluded.
     double ambientOcclusion(const Point3d& p, const Vector3d& normal, ShadingStats& stats) const;
     Color albedo(const DistanceEstimate& estimate) const;

@@ -1,0 +1,71 @@
+// Issue 16 at the command line: every algebra renders and meshes, and every bad combination of
+// algebra, c and slice keys is one line, exit 2, and no file.
+#include "cmd/cli_fixture.h"
+
+namespace quaternia::testing {
+namespace {
+
+class AlgebraCli : public CliFixture {
+  protected:
+    static constexpr const char* kTiny = " --width 48 --height 36";
+    std::string render(const std::string& settings) {
+        return "render -o " + output() + kTiny + " " + settings;
+    }
+};
+
+TEST_F(AlgebraCli, EveryAlgebraRendersTheDefaultScene) {
+    for (const char* settings :
+         {"--set 'fractal.algebra=\"bicomplex\"'", "--set 'fractal.algebra=\"coquaternion\"'",
+          "--set 'fractal.algebra=\"octonion\"' --set 'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0.1, 0, 0, "
+          "0]'",
+          "--set 'fractal.algebra=\"biquaternion\"' --set 'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0, 0, "
+          "0, 0]' --set 'slice.axes=[[1, 0, 0, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0, 0, 0], [0, 0, 0, "
+          "0, 0, 0, 1, 0]]'"}) {
+        CommandResult r = run(render(settings) + " --json");
+        EXPECT_EQ(r.exitCode, 0) << settings << ": " << r.err;
+        EXPECT_NE(r.out.find("\"hits\""), std::string::npos) << r.out;
+        EXPECT_EQ(r.out.find("\"hits\":0,"), std::string::npos) << settings << ": " << r.out;
+        EXPECT_TRUE(fs::exists(output())) << settings;
+        fs::remove(output());
+    }
+}
+
+TEST_F(AlgebraCli, BadAlgebraInputIsOneLineAndNoFile) {
+    expectUserError(run(render("--set 'fractal.algebra=\"sedenion\"'")), "fractal.algebra");
+    CommandResult r = run(render("--set 'fractal.algebra=\"octonion\"'"));
+    expectUserError(r, "fractal.c");
+    EXPECT_NE(r.err.find("needs 8"), std::string::npos) << r.err;
+    expectUserError(run(render("--set 'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0]'")),
+                    "fractal.c");
+    expectUserError(run(render("--set 'fractal.c=[1, 2, 3]'")), "fractal.c");
+    // 8-component slice keys with a 4-component algebra, and the reverse.
+    expectUserError(run(render("--set 'slice.origin=[0, 0, 0, 0, 0, 0, 0, 0]'")), "slice.origin");
+    expectUserError(run(render("--set 'fractal.algebra=\"octonion\"' --set 'fractal.c=[-0.2, 0.6, "
+                               "0.2, 0.2, 0, 0, 0, 0]' --set 'slice.normal=[0, 0, 1, 1]'")),
+                    "slice.normal");
+    expectUserError(
+        run(render(
+            "--set 'fractal.algebra=\"octonion\"' --set 'fractal.c=[-0.2, 0.6, 0.2, 0.2, "
+            "0, 0, 0, 0]' --set 'slice.axes=[[1, 0, 0, 0, 0, 0, 0, 0], [2, 0, 0, 0, 0, 0, 0, "
+            "0], [0, 0, 1, 0, 0, 0, 0, 0]]'")),
+        "slice.axes");
+    // A formula whose octonion escape radius is not derived needs a bailout.
+    expectUserError(run(render("--set 'fractal.algebra=\"octonion\"' --set 'fractal.c=[-0.2, 0.6, "
+                               "0.2, 0.2, 0, 0, 0, 0]' --set 'fractal.formula=\"z i z - i z^2 + "
+                               "c\"'")),
+                    "fractal.bailout");
+    // The dynamics commands work in the quaternions only, and say so.
+    expectUserError(run("orbit --set 'fractal.algebra=\"bicomplex\"'"), "fractal.algebra");
+    expectUserError(run("plane -o " + output() + " --set 'fractal.algebra=\"bicomplex\"'"),
+                    "fractal.algebra");
+}
+
+TEST_F(AlgebraCli, EveryAlgebraMeshes) {
+    CommandResult r = run("mesh -o " + output("set.stl") +
+                          " --set 'fractal.algebra=\"bicomplex\"' --set mesh.resolution=24");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(output("set.stl")));
+}
+
+}  // namespace
+}  // namespace quaternia::testing

@@ -1,0 +1,457 @@
+#include "quaternia/fractal/hypercomplex_julia.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <string>
+
+#include "quaternia/fractal/slice.h"
+#include "quaternia/util/error.h"
+
+namespace quaternia {
+namespace {
+
+using Complex = std::complex<double>;
+
+double normSquared(const Hypercomplex& a) {
+    double sum = 0;
+    for (double x : a)
+        sum += x * x;
+    return sum;
+}
+
+double dotProduct(const Hypercomplex& a, const Hypercomplex& b) {
+    double sum = 0;
+    for (size_t n = 0; n < a.size(); ++n)
+        sum += a[n] * b[n];
+    return sum;
+}
+
+// The positive root R of m r^d - sum_{k<d} b_k r^k - r: for |z| > R, |p(z)| > |z| and the orbit
+// tends to infinity (as Polynomial::escapeRadius; b[1] already holds the "+ r").
+double escapeRadiusFrom(double m, const std::vector<double>& b, int d, const std::string& what) {
+    auto f = [&](double r) {
+        double value = m;
+        for (int k = d - 1; k >= 0; --k)
+            value = value * r - b[size_t(k)];
+        return value;
+    };
+    double lo = 0, hi = 1;
+    while (f(hi) < 0) {
+        lo = hi;
+        hi *= 2;
+        if (!std::isfinite(hi))
+            throw UserError("fractal.formula",
+                            "fractal.formula: " + what + ": no finite escape radius");
+    }
+    for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
+        const double mid = (lo + hi) / 2;
+        (f(mid) < 0 ? lo : hi) = mid;
+    }
+    return hi;
+}
+
+// The duplex form of a bicomplex number: (x - w) + (y + z) i and (x + w) + (y - z) i.
+std::array<Complex, 2> duplex(const Hypercomplex& q) {
+    return {Complex(q[0] - q[3], q[1] + q[2]), Complex(q[0] + q[3], q[1] - q[2])};
+}
+Hypercomplex fromDuplex(const Complex& a, const Complex& b) {
+    return {0.5 * (a.real() + b.real()),
+            0.5 * (a.imag() + b.imag()),
+            0.5 * (a.imag() - b.imag()),
+            0.5 * (b.real() - a.real()),
+            0,
+            0,
+            0,
+            0};
+}
+
+Complex horner(const std::vector<Complex>& c, const Complex& w) {
+    Complex value = 0;
+    for (size_t k = c.size(); k-- > 0;)
+        value = value * w + c[k];
+    return value;
+}
+Complex hornerDerivative(const std::vector<Complex>& c, const Complex& w) {
+    Complex value = 0;
+    for (size_t k = c.size(); k-- > 1;)
+        value = value * w + double(k) * c[k];
+    return value;
+}
+
+}  // namespace
+
+// ---- Slice ------------------------------------------------------------------------------------
+
+HypercomplexSlice::HypercomplexSlice(const SliceSettings& settings, Algebra algebra) {
+    if (algebraDimension(algebra) == 4) {
+        // The quaternion slice map (slice.h) is affine: its value at 0 and its three tangents.
+        const Slice slice(settings);
+        const Quaternion o = slice.quaternionFromWorld(Point3d(0, 0, 0));
+        origin_ = {o.w, o.x, o.y, o.z, 0, 0, 0, 0};
+        for (int a = 0; a < 3; ++a) {
+            const Quaternion& t = slice.tangents()[size_t(a)];
+            axes_[size_t(a)] = {t.w, t.x, t.y, t.z, 0, 0, 0, 0};
+        }
+        stretch_ = 1 / slice.stepScale();
+        quaternionSlice_ = true;
+        return;
+    }
+    for (size_t n = 0; n < settings.origin.size() && n < 8; ++n)
+        origin_[n] = settings.origin[n];
+    if (settings.axes.size() != 24) {
+        axes_ = {basisElement(0), basisElement(1), basisElement(2)};
+        return;
+    }
+    // Gram-Schmidt in the order given.
+    for (size_t a = 0; a < 3; ++a) {
+        Hypercomplex v{};
+        for (size_t n = 0; n < 8; ++n)
+            v[n] = settings.axes[8 * a + n];
+        const double given = std::sqrt(normSquared(v));
+        for (size_t b = 0; b < a; ++b)
+            v = v - dotProduct(v, axes_[b]) * axes_[b];
+        const double left = std::sqrt(normSquared(v));
+        if (!(given > 0) || !(left > 1e-9 * given)) {
+            throw UserError("slice.axes", "slice.axes: axis " + std::to_string(a + 1) +
+                                              " lies in the span of the axes before it; three "
+                                              "independent directions are needed");
+        }
+        axes_[a] = (1 / left) * v;
+    }
+}
+
+double HypercomplexSlice::boundingRadius(double bailout) const {
+    if (quaternionSlice_) return bailout;
+    double along = 0;
+    for (const Hypercomplex& axis : axes_)
+        along += dotProduct(origin_, axis) * dotProduct(origin_, axis);
+    return bailout + std::sqrt(along);
+}
+
+Hypercomplex HypercomplexSlice::fromWorld(const Point3d& p) const {
+    return origin_ + p.x * axes_[0] + p.y * axes_[1] + p.z * axes_[2];
+}
+
+// ---- The set ----------------------------------------------------------------------------------
+
+HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxIterations,
+                                           double bailout)
+    : formula_(std::move(formula)), maxIterations_(maxIterations) {
+    const Algebra algebra = formula_.algebra();
+    const int d = formula_.degree();
+    if (d < 2) {
+        throw UserError("fractal.formula", "fractal.formula has degree " + std::to_string(d) +
+                                               ", below 2; its orbits need not escape");
+    }
+    if (bailout != 0 && !(bailout > 1)) {
+        throw UserError("fractal.bailout",
+                        "fractal.bailout must be 0 (automatic) or greater than 1, got " +
+                            std::to_string(bailout));
+    }
+    const std::vector<double>& bound = formula_.normBound();
+    switch (algebra) {
+        case Algebra::kOctonion:
+        case Algebra::kQuaternion: {
+            kind_ = DistanceKind::kEstimate;
+            // |top-degree part| = the product of its coefficients' norms when it is one term
+            // (the norm is multiplicative); sums of top-degree terms may cancel.
+            const double m = formula_.topDegreeMinimum();
+            if (!(m > 0)) {
+                if (bailout == 0)
+                    throw UserError("fractal.bailout",
+                                    "fractal.bailout: give a bailout above 1: the octonion escape "
+                                    "radius is derived only for formulas whose highest degree is "
+                                    "a single term");
+                escapeRadius_ = bailout;
+            } else {
+                std::vector<double> b(bound.begin(), bound.begin() + d);
+                b[0] = euclideanNorm(formula_.evaluate(Hypercomplex{}));
+                b[1] += 1;
+                escapeRadius_ = escapeRadiusFrom(m, b, d, "octonion formula");
+            }
+            bailout_ = bailout == 0 ? escapeRadius_ : bailout;
+            break;
+        }
+        case Algebra::kBicomplex: {
+            kind_ = DistanceKind::kEstimate;
+            bailout_ = bailout == 0 ? 4.0 : bailout;
+            // The two complex polynomials of the duplex form, from d + 1 values on a circle
+            // (the discrete Fourier transform of p(r w^k) gives the coefficients times r^j).
+            const int samples = d + 1;
+            const double r = 1.0;
+            for (auto& c : componentCoefficients_)
+                c.assign(size_t(samples), Complex(0));
+            const double pi = std::acos(-1.0);
+            for (int k = 0; k < samples; ++k) {
+                const Complex w = std::polar(r, 2 * pi * k / samples);
+                const auto value = duplex(formula_.evaluate(fromDuplex(w, w)));
+                for (int j = 0; j < samples; ++j) {
+                    const Complex turn = std::polar(1.0, -2 * pi * j * k / samples);
+                    for (int i = 0; i < 2; ++i)
+                        componentCoefficients_[i][size_t(j)] += value[size_t(i)] * turn;
+                }
+            }
+            for (int i = 0; i < 2; ++i) {
+                for (auto& c : componentCoefficients_[i])
+                    c /= double(samples);
+                const double m = std::abs(componentCoefficients_[i][size_t(d)]) * (1 - 1e-9);
+                if (!(m > 1e-12)) {
+                    throw UserError("fractal.formula",
+                                    "fractal.formula: the bicomplex formula's top degree cancels "
+                                    "in one duplex component; its orbits need not escape");
+                }
+                std::vector<double> b(size_t(d), 0.0);
+                for (int k = 0; k < d; ++k)
+                    b[size_t(k)] =
+                        std::abs(componentCoefficients_[i][size_t(k)]) * (1 + 1e-9) + 1e-12;
+                b[1] += 1;
+                componentEscapeRadius_[i] = escapeRadiusFrom(m, b, d, "bicomplex formula");
+            }
+            escapeRadius_ = bailout_;
+            break;
+        }
+        case Algebra::kCoquaternion:
+        case Algebra::kBiquaternion:
+            kind_ = DistanceKind::kLipschitz;
+            bailout_ = bailout == 0 ? 2.0 : bailout;
+            escapeRadius_ = bailout_;
+            break;
+    }
+}
+
+DistanceEstimate HypercomplexJuliaSet::estimate(const Hypercomplex& z0) const {
+    switch (formula_.algebra()) {
+        case Algebra::kBicomplex:
+            return bicomplexEstimate(z0);
+        case Algebra::kCoquaternion:
+        case Algebra::kBiquaternion:
+            return lipschitzDistance(z0);
+        default:
+            return octonionEstimate(z0);
+    }
+}
+
+bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {
+    const double bailoutSquared = bailout_ * bailout_;
+    if (formula_.algebra() == Algebra::kBicomplex) {
+        auto w = duplex(z0);
+        for (int n = 0;; ++n) {
+            // |q|^2 = (|a|^2 + |b|^2) / 2
+            if (0.5 * (std::norm(w[0]) + std::norm(w[1])) > bailoutSquared) return false;
+            if (n + 1 >= maxIterations_) return true;
+            for (int i = 0; i < 2; ++i)
+                w[size_t(i)] = horner(componentCoefficients_[i], w[size_t(i)]);
+        }
+    }
+    Hypercomplex z = z0;
+    for (int n = 0;; ++n) {
+        if (normSquared(z) > bailoutSquared) return false;
+        if (n + 1 >= maxIterations_) return true;
+        z = formula_.evaluate(z);
+    }
+}
+
+DistanceEstimate HypercomplexJuliaSet::octonionEstimate(const Hypercomplex& z0) const {
+    DistanceEstimate result;
+    Hypercomplex z = z0;
+    double r2 = normSquared(z), trap2 = r2;
+    double derivative = 1;  // the running bound rho_n of |z'_n|
+    const double bailoutSquared = bailout_ * bailout_;
+    int n = 0;
+    while (r2 <= bailoutSquared) {
+        if (n + 1 >= maxIterations_) return insideEstimate(std::sqrt(trap2), maxIterations_);
+        derivative *= formula_.derivativeNormBound(std::sqrt(r2));
+        z = formula_.evaluate(z);
+        r2 = normSquared(z);
+        trap2 = std::min(trap2, r2);
+        ++n;
+    }
+    result.trap = std::sqrt(trap2);
+    result.escapeIteration = n;
+    int extra = 0;
+    const double estimateRadiusSquared = continuationRadiusSquared<double>(formula_.degree());
+    if (r2 > escapeRadius_ * escapeRadius_) {
+        for (; r2 < estimateRadiusSquared && extra < kMaxContinuation; ++extra) {
+            derivative *= formula_.derivativeNormBound(std::sqrt(r2));
+            z = formula_.evaluate(z);
+            r2 = normSquared(z);
+        }
+    }
+    result.iterations = n + extra;
+    result.distance = std::max(0.0, 0.25 * std::sqrt(r2) / derivative * std::log(r2));
+    result.smoothIteration = smoothEscapeCount(n + extra, r2, formula_.degree());
+    return result;
+}
+
+DistanceEstimate HypercomplexJuliaSet::bicomplexEstimate(const Hypercomplex& z0) const {
+    // Membership in K_N by the norm of q, |q|^2 = (|a|^2 + |b|^2) / 2; the distance to
+    // K = K_1 x K_2 from the two complex orbits (a, b), each followed with its derivative until
+    // it is far outside its escape radius.
+    DistanceEstimate result;
+    const double bailoutSquared = bailout_ * bailout_;
+    std::array<Complex, 2> w = duplex(z0), slope = {Complex(1), Complex(1)};
+    auto step = [&](size_t i) {
+        slope[i] *= hornerDerivative(componentCoefficients_[i], w[i]);
+        w[i] = horner(componentCoefficients_[i], w[i]);
+    };
+    double q2 = 0.5 * (std::norm(w[0]) + std::norm(w[1])), trap2 = q2;
+    int n = 0;
+    while (q2 <= bailoutSquared) {
+        if (n + 1 >= maxIterations_) return insideEstimate(std::sqrt(trap2), maxIterations_);
+        step(0), step(1);
+        q2 = 0.5 * (std::norm(w[0]) + std::norm(w[1]));
+        trap2 = std::min(trap2, q2);
+        ++n;
+    }
+    result.trap = std::sqrt(trap2);
+    result.escapeIteration = n;
+    result.smoothIteration = smoothEscapeCount(n, q2, formula_.degree());
+    const double estimateRadiusSquared = continuationRadiusSquared<double>(formula_.degree());
+    double distanceSquared = 0;  // of the duplex point to K_1 x K_2
+    int iterations = n;
+    for (size_t i = 0; i < 2; ++i) {
+        // A component not beyond its escape radius by iteration N counts as in K_i (distance 0);
+        // one beyond it escapes for certain and is followed to where its estimate is accurate.
+        const double R2 = componentEscapeRadius_[i] * componentEscapeRadius_[i];
+        int k = n, extra = 0;
+        while (extra < kMaxContinuation) {
+            const double r2 = std::norm(w[i]);
+            if (r2 > R2 ? r2 >= estimateRadiusSquared : k + 1 >= maxIterations_) break;
+            step(i);
+            ++k, ++extra;
+        }
+        iterations = std::max(iterations, k);
+        const double r2 = std::norm(w[i]);
+        if (r2 > R2) {
+            const double d =
+                std::max(0.0, 0.25 * std::sqrt(r2) / std::abs(slope[i]) * std::log(r2));
+            distanceSquared += d * d;
+        }
+    }
+    result.iterations = iterations;
+    // |D(q)| = sqrt(2) |q|: the duplex distance over sqrt(2). Where neither component is seen
+    // to escape (a bailout below their escape radii), the Lipschitz distance still holds.
+    result.distance =
+        distanceSquared > 0 ? std::sqrt(0.5 * distanceSquared) : lipschitzDistance(z0).distance;
+    return result;
+}
+
+DistanceEstimate HypercomplexJuliaSet::lipschitzDistance(const Hypercomplex& z0) const {
+    // A point w_0 within delta of z_0 has |w_k - z_k| <= e_k with e_0 = delta and
+    // e_{k+1} = P'(|z_k| + e_k) e_k: the segment from z_k to w_k lies in the ball of radius
+    // |z_k| + e_k, where P' bounds |Dp| (HypercomplexFormula::normBound). So w escapes (is outside
+    // K_N) as soon as |z_k| - e_k > B for some k < N. The largest such delta is found from the
+    // first-order gains prod P'(|z_j|), halved until the exact recursion confirms it.
+    DistanceEstimate result;
+    const double bailoutSquared = bailout_ * bailout_;
+    std::array<double, kLipschitzOrbit> radius;  // |z_k|, written as the orbit goes
+    Hypercomplex z = z0;
+    double r2 = normSquared(z), trap2 = r2;
+    int n = 0;
+    radius[0] = std::sqrt(r2);
+    while (r2 <= bailoutSquared) {
+        if (n + 1 >= maxIterations_ || n + 1 >= int(kLipschitzOrbit)) {
+            result.inside = n + 1 >= maxIterations_;
+            result.trap = std::sqrt(trap2);
+            result.escapeIteration = result.iterations = n + 1;
+            result.smoothIteration = n + 1;
+            return result;  // inside K_N (or an orbit too long to bound: distance 0)
+        }
+        z = formula_.evaluate(z);
+        r2 = normSquared(z);
+        trap2 = std::min(trap2, r2);
+        radius[size_t(++n)] = std::sqrt(r2);
+    }
+    result.trap = std::sqrt(trap2);
+    result.escapeIteration = n;
+    result.smoothIteration = smoothEscapeCount(n, std::max(r2, 1.0 + 1e-9), formula_.degree());
+    // A few more iterates (still below N) may escape by a wider margin.
+    int last = n;
+    for (; last + 1 < maxIterations_ && last + 1 < int(kLipschitzOrbit) && last < n + 3; ++last) {
+        const Hypercomplex next = formula_.evaluate(z);
+        const double next2 = normSquared(next);
+        if (!(next2 < 1e200)) break;
+        z = next;
+        radius[size_t(last + 1)] = std::sqrt(next2);
+    }
+    result.iterations = last;
+    auto escapesWithin = [&](double delta) {
+        double e = delta;
+        for (int k = 0; k <= last; ++k) {
+            if (k >= n && radius[size_t(k)] - e > bailout_) return true;
+            e *= formula_.derivativeNormBound(radius[size_t(k)] + e);
+            if (!std::isfinite(e)) return false;
+        }
+        return false;
+    };
+    double gain = 1, delta = 0;
+    for (int k = 0; k <= last; ++k) {
+        if (k >= n) delta = std::max(delta, (radius[size_t(k)] - bailout_) / gain);
+        gain *= formula_.derivativeNormBound(radius[size_t(k)]);
+    }
+    for (int halving = 0; halving < 40 && delta > 0; ++halving, delta *= 0.5)
+        if (escapesWithin(delta)) break;
+    result.distance = escapesWithin(delta) ? delta : 0.0;
+    return result;
+}
+
+double HypercomplexJuliaSet::logRadiusAfter(const Hypercomplex& z0, int iterations) const {
+    Hypercomplex z = z0;
+    for (int n = 0; n < iterations; ++n) {
+        const Hypercomplex next = formula_.evaluate(z);
+        if (!std::isfinite(normSquared(next))) break;
+        z = next;
+    }
+    return 0.5 * std::log(normSquared(z));
+}
+
+int HypercomplexJuliaSet::gradientIterations(const Hypercomplex& z0) const {
+    const DistanceEstimate e = estimate(z0);
+    return e.inside ? maxIterations_ - 1 : std::min(e.escapeIteration, maxIterations_ - 1);
+}
+
+std::array<double, 3> HypercomplexJuliaSet::potentialGradient(
+    const Hypercomplex& z0, const std::array<Hypercomplex, 3>& tangents) const {
+    const int iterations = std::max(1, gradientIterations(z0));
+    Hypercomplex z = z0;
+    std::array<Hypercomplex, 3> t = tangents;
+    for (int n = 0; n < iterations; ++n) {
+        Hypercomplex next{};
+        for (auto& tangent : t) {
+            auto [value, slope] = formula_.evaluateWithDerivative(z, tangent);
+            tangent = slope;
+            next = value;
+        }
+        if (!std::isfinite(normSquared(next))) break;
+        z = next;
+        const double largest = std::max({normSquared(t[0]), normSquared(t[1]), normSquared(t[2])});
+        if (largest > 1e200) {
+            for (auto& tangent : t)
+                tangent = 1e-100 * tangent;
+        }
+    }
+    return {dotProduct(z, t[0]), dotProduct(z, t[1]), dotProduct(z, t[2])};
+}
+
+std::shared_ptr<const HypercomplexFractal> hypercomplexFractalFromScene(const Scene& scene) {
+    const Algebra algebra = scene.fractal.algebra;
+    const Quaternion& c4 = scene.fractal.c;
+    Hypercomplex c{c4.w, c4.x, c4.y, c4.z, 0, 0, 0, 0};
+    if (algebraDimension(algebra) == 8)
+        for (size_t n = 0; n < 4; ++n)
+            c[4 + n] = scene.fractal.cUpper[n];
+    Formula formula = [&] {
+        try {
+            return Formula::parse(scene.fractal.formula);
+        } catch (const FormulaError& e) {
+            throw UserError("fractal.formula", std::string("fractal.formula: ") + e.what());
+        }
+    }();
+    HypercomplexJuliaSet set(HypercomplexFormula(formula, algebra, c), scene.fractal.maxIterations,
+                             scene.fractal.bailout);
+    return std::make_shared<const HypercomplexFractal>(
+        HypercomplexFractal{std::move(set), HypercomplexSlice(scene.slice, algebra)});
+}
+
+}  // namespace quaternia

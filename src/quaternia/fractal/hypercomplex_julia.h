@@ -1,0 +1,117 @@
+// Julia sets in the algebras other than the quaternions (issue 16; hypercomplex.h): bicomplex
+// numbers, coquaternions, biquaternions and octonions, seen through a 3D slice, for the scalar
+// reference renderer (march.h), the mesher and every other consumer of Fractal.
+//
+// The set drawn is K_N: the points whose iterates z_0 .. z_{N-1} all have |z| <= bailout in
+// the Euclidean norm of the components. What bounds a step (docs/methods.md, Other algebras):
+// - octonions: the norm is multiplicative, so the quaternion estimate 0.5 |z| ln|z| / rho
+//   carries over, rho the running bound P'(|z_n|) rho_n of the derivative's norm;
+// - bicomplex numbers: the duplex map is an isomorphism onto C x C up to the factor sqrt(2)
+//   (|q|^2 = (|a|^2 + |b|^2) / 2), so every polynomial acts as two complex polynomials and K is
+//   the product K_1 x K_2 of their filled Julia sets: the distance to it is
+//   sqrt(d_1^2 + d_2^2) / sqrt(2), each d_i the complex estimate (0 inside K_i);
+// - coquaternions and biquaternions (null elements, no escape radius): no estimate is known.
+//   A point whose orbit leaves the ball |z| <= B at iteration n keeps every point within delta
+//   outside K_N if the errors e_0 = delta, e_{k+1} = P'(|z_k| + e_k) e_k stay below |z_k| - B
+//   at some k >= n (P' bounds |Dp| on balls: HypercomplexFormula::normBound): a proven, if
+//   short, safe distance. The renderer marches these by Algorithm 2's fixed steps, skipping
+//   ahead where that distance is longer.
+#pragma once
+
+#include <array>
+#include <complex>
+#include <memory>
+#include <vector>
+
+#include "quaternia/algebra/hypercomplex_formula.h"
+#include "quaternia/algebra/vecmath.h"
+#include "quaternia/fractal/distance.h"
+#include "quaternia/scene/scene.h"
+
+namespace quaternia {
+
+// How a set's distance relates to the true distance to K_N.
+enum class DistanceKind {
+    kEstimate,  // the escape-time estimate (quaternions, octonions, bicomplex numbers)
+    kLipschitz  // a proven lower bound, often far below the distance: march by fixed steps
+};
+
+// From 3D to the algebra: the point (x, y, z) stands for origin + x e_0 + y e_1 + z e_2 with
+// orthonormal e_n (an isometry). 4-component algebras take the quaternion slice (slice.h).
+class HypercomplexSlice {
+  public:
+    // Throws UserError naming slice.axes for axes that do not span three dimensions.
+    HypercomplexSlice(const SliceSettings& settings, Algebra algebra);
+    Hypercomplex fromWorld(const Point3d& p) const;
+    const std::array<Hypercomplex, 3>& tangents() const { return axes_; }
+    // A 3D step of length L moves the algebra's point by at most L times this.
+    double stretch() const { return stretch_; }
+    // A radius about the 3D origin outside which no point maps into the ball |q| <= bailout:
+    // the bailout for the quaternion slice (|p| <= |s(p)|, and the rotation keeps norms); for
+    // the 8-component slices, an isometry, the bailout plus the length of the origin's part
+    // along the axes.
+    double boundingRadius(double bailout) const;
+
+  private:
+    Hypercomplex origin_{};
+    std::array<Hypercomplex, 3> axes_{};
+    double stretch_ = 1;
+    bool quaternionSlice_ = false;  // 4-component algebras: slice.h's map (affine)
+};
+
+class HypercomplexJuliaSet {
+  public:
+    // bailout 0: the escape radius for octonions (their norm is multiplicative, and the
+    // formula's top-degree part must be one term), 4 for bicomplex numbers (POV-Ray's), 2 for
+    // coquaternions and biquaternions. Throws UserError naming fractal.formula or
+    // fractal.bailout.
+    HypercomplexJuliaSet(HypercomplexFormula formula, int maxIterations, double bailout);
+
+    DistanceEstimate estimate(const Hypercomplex& z0) const;
+    bool contains(const Hypercomplex& z0) const;
+    // ln|z_M| after exactly M iterations (or where it overflows): the potential whose gradient
+    // is the normal; and the M the normal takes at z0 (its escape iteration, at most N).
+    double logRadiusAfter(const Hypercomplex& z0, int iterations) const;
+    int gradientIterations(const Hypercomplex& z0) const;
+    // The gradient of |z_M|^2 along the slice's three tangents (the chain rule through Dp), M =
+    // gradientIterations(z0): the normal's direction, as JuliaSet::potentialGradient.
+    std::array<double, 3> potentialGradient(const Hypercomplex& z0,
+                                            const std::array<Hypercomplex, 3>& tangents) const;
+
+    DistanceKind distanceKind() const { return kind_; }
+    const HypercomplexFormula& formula() const { return formula_; }
+    int maxIterations() const { return maxIterations_; }
+    double bailout() const { return bailout_; }
+    // K_N lies in the ball of radius bailout.
+    double boundingRadius() const { return bailout_; }
+    // Where orbits are certain to escape (octonions; the bailout for the other algebras).
+    double escapeRadius() const { return escapeRadius_; }
+
+  private:
+    DistanceEstimate octonionEstimate(const Hypercomplex& z0) const;
+    DistanceEstimate bicomplexEstimate(const Hypercomplex& z0) const;
+    // A proven distance to K_N from the orbit's escape and the Lipschitz bounds of p along it
+    // (header comment, docs/methods.md); orbits are followed at most kLipschitzOrbit iterates.
+    static constexpr size_t kLipschitzOrbit = 256;
+    DistanceEstimate lipschitzDistance(const Hypercomplex& z0) const;
+
+    HypercomplexFormula formula_;
+    int maxIterations_;
+    double bailout_;
+    double escapeRadius_;
+    DistanceKind kind_;
+    // bicomplex: the two complex polynomials of the duplex form (coefficients, lowest degree
+    // first) and their escape radii
+    std::array<std::vector<std::complex<double>>, 2> componentCoefficients_;
+    std::array<double, 2> componentEscapeRadius_ = {0, 0};
+};
+
+// The set and slice of a scene whose fractal.algebra is not the quaternions.
+struct HypercomplexFractal {
+    HypercomplexJuliaSet set;
+    HypercomplexSlice slice;
+};
+
+std::shared_ptr<const HypercomplexFractal> hypercomplexFractalFromScene(const Scene& scene);
+
+}  // namespace quaternia
