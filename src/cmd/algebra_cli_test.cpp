@@ -54,10 +54,23 @@ TEST_F(AlgebraCli, BadAlgebraInputIsOneLineAndNoFile) {
                                "0.2, 0.2, 0, 0, 0, 0]' --set 'fractal.formula=\"z i z - i z^2 + "
                                "c\"'")),
                     "fractal.bailout");
+    // Functions are the bicomplex numbers' only.
+    expectUserError(run(render("--set 'fractal.formula=\"sin(z) + c\"'")), "fractal.formula");
     // The dynamics commands work in the quaternions only, and say so.
     expectUserError(run("orbit --set 'fractal.algebra=\"bicomplex\"'"), "fractal.algebra");
     expectUserError(run("plane -o " + output() + " --set 'fractal.algebra=\"bicomplex\"'"),
                     "fractal.algebra");
+}
+
+TEST_F(AlgebraCli, BicomplexFunctionsRender) {
+    // POV-Ray's hypercomplex functions, by Algorithm 2's fixed steps.
+    // Fixed steps through a bounding sphere of radius 4 are slow: a small picture, coarse steps.
+    CommandResult r = run("render -o " + output() +
+                          " --width 16 --height 12 --set render.step=0.01 --set "
+                          "'fractal.algebra=\"bicomplex\"' --set 'fractal.formula=\"sin(z) + "
+                          "c\"' --set 'fractal.c=[0.2, 0.1, 0, 0]' --json");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out.find("\"hits\":0,"), std::string::npos) << r.out;
 }
 
 TEST_F(AlgebraCli, EveryAlgebraMeshes) {

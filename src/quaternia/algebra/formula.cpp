@@ -3,11 +3,14 @@
 #include "quaternia/algebra/formula.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "quaternia/algebra/formula_tree.h"
@@ -42,6 +45,24 @@ NodePtr makeConstant(const Quaternion& value) {
     node->value = value;
     return node;
 }
+
+constexpr std::array<std::pair<FormulaFunction, std::string_view>, 15> kFunctions = {{
+    {FormulaFunction::kExp, "exp"},
+    {FormulaFunction::kLog, "log"},
+    {FormulaFunction::kSin, "sin"},
+    {FormulaFunction::kCos, "cos"},
+    {FormulaFunction::kTan, "tan"},
+    {FormulaFunction::kSinh, "sinh"},
+    {FormulaFunction::kCosh, "cosh"},
+    {FormulaFunction::kTanh, "tanh"},
+    {FormulaFunction::kAsin, "asin"},
+    {FormulaFunction::kAcos, "acos"},
+    {FormulaFunction::kAtan, "atan"},
+    {FormulaFunction::kAsinh, "asinh"},
+    {FormulaFunction::kAcosh, "acosh"},
+    {FormulaFunction::kAtanh, "atanh"},
+    {FormulaFunction::kReciprocal, "reciprocal"},
+}};
 
 // ---- Lexer -----------------------------------------------------------------------------------
 
@@ -218,13 +239,26 @@ class Parser {
         return node;
     }
 
-    // power := primary ['^' non-negative integer]
+    // power := primary ['^' non-negative integer | '^' ['-'] real number]: real exponents
+    // (z^2.5, z^-1) are powers of the bicomplex numbers only.
     NodePtr parsePower() {
         NodePtr base = parsePrimary();
         if (!atSymbol('^')) return base;
+        const int column = token_.column;
         advance();
-        if (token_.kind != Token::Kind::kNumber || !token_.integer) {
-            fail("a non-negative integer exponent");
+        const bool negative = atSymbol('-');
+        if (negative) advance();
+        if (token_.kind != Token::Kind::kNumber || token_.value.x != 0 || token_.value.y != 0 ||
+            token_.value.z != 0)
+            fail("an exponent");
+        if (negative || !token_.integer) {
+            auto node = std::make_unique<FormulaNode>();
+            node->kind = FormulaNode::Kind::kRealPower;
+            node->realExponent = negative ? -token_.value.w : token_.value.w;
+            node->column = column;
+            node->left = std::move(base);
+            advance();
+            return node;
         }
         if (token_.value.w > kMaxExponent) {
             failAt(token_.column, "the exponent " + std::string(token_.text) +
@@ -259,6 +293,21 @@ class Parser {
     NodePtr parseName() {
         const std::string_view name = token_.text;
         NodePtr node;
+        if (auto function = formulaFunctionNamed(name)) {
+            // function '(' sum ')'
+            const int column = token_.column;
+            advance();
+            if (!atSymbol('(')) fail("'(' after " + std::string(name));
+            advance();
+            auto call = std::make_unique<FormulaNode>();
+            call->kind = FormulaNode::Kind::kFunction;
+            call->function = *function;
+            call->column = column;
+            call->left = parseSum();
+            if (!atSymbol(')')) fail("')' to close " + std::string(name) + "(");
+            advance();
+            return call;
+        }
         if (name == "z") {
             node = makeNode(FormulaNode::Kind::kZ);
         } else if (name == "c") {
@@ -267,7 +316,8 @@ class Parser {
             node = makeConstant(unitNamed(name[0]));
         } else {
             failAt(token_.column, "unknown name '" + std::string(name) +
-                                      "'; expected z, c, i, j, k, a number or '('");
+                                      "'; expected z, c, i, j, k, a number, '(' or a function "
+                                      "such as sin(");
         }
         advance();
         return node;
@@ -375,6 +425,20 @@ Terms concatenate(Terms left, const Terms& right) {
     return combineLikeTerms(std::move(left));
 }
 
+}  // namespace
+
+[[noreturn]] void refuseTranscendental(const FormulaNode& node) {
+    const std::string what = node.kind == FormulaNode::Kind::kFunction
+                                 ? std::string(formulaFunctionName(node.function)) + "()"
+                                 : "a power that is not a non-negative integer";
+    throw FormulaError(node.column, what +
+                                        " is defined for fractal.algebra = \"bicomplex\" only "
+                                        "(through its duplex form); the other algebras take "
+                                        "polynomials");
+}
+
+namespace {
+
 Terms expandNode(const FormulaNode& node, const Quaternion& c) {
     using Kind = FormulaNode::Kind;
     switch (node.kind) {
@@ -399,6 +463,9 @@ Terms expandNode(const FormulaNode& node, const Quaternion& c) {
                 result = multiply(result, base);
             return result;
         }
+        case Kind::kFunction:
+        case Kind::kRealPower:
+            refuseTranscendental(node);
     }
     return {};
 }
@@ -410,6 +477,26 @@ bool containsC(const FormulaNode* node) {
 }
 
 }  // namespace
+
+std::optional<FormulaFunction> formulaFunctionNamed(std::string_view name) {
+    for (const auto& [function, text] : kFunctions)
+        if (text == name) return function;
+    return std::nullopt;
+}
+
+std::string_view formulaFunctionName(FormulaFunction function) {
+    for (const auto& [f, text] : kFunctions)
+        if (f == function) return text;
+    return "?";
+}
+
+const FormulaNode* firstTranscendental(const FormulaNode* node) {
+    if (node == nullptr) return nullptr;
+    if (node->kind == FormulaNode::Kind::kFunction || node->kind == FormulaNode::Kind::kRealPower)
+        return node;
+    if (const FormulaNode* left = firstTranscendental(node->left.get())) return left;
+    return firstTranscendental(node->right.get());
+}
 
 Formula Formula::parse(std::string_view text) {
     Formula formula;

@@ -42,6 +42,9 @@ class Compiler {
                 return multiply(node(*n.left), node(*n.right));
             case Kind::kPower:
                 return power(node(*n.left), n.exponent);
+            case Kind::kFunction:
+            case Kind::kRealPower:
+                refuseTranscendental(n);
         }
         return constant(Quaternion());
     }

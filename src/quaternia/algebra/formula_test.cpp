@@ -145,16 +145,19 @@ struct ErrorCase {
 TEST(Formula, ReportsErrorColumns) {
     const std::vector<ErrorCase> cases = {
         {"z^2 + ", 7, "column 7: expected a number, i, j, k, z, c or '(' but found end of formula"},
-        {"z^2 + x", 7, "column 7: unknown name 'x'; expected z, c, i, j, k, a number or '('"},
+        {"z^2 + x", 7,
+         "column 7: unknown name 'x'; expected z, c, i, j, k, a number, '(' or a function such "
+         "as sin("},
         {"z^2 + * c", 7, "column 7: expected a number, i, j, k, z, c or '(' but found '*'"},
         {"(z + c", 7,
          "column 7: expected ')' to close the '(' at column 1 but found end of formula"},
         {"z + c)", 6, "column 6: unmatched ')': no '(' is open"},
         {"()", 2, "column 2: expected a number, i, j, k, z, c or '(' but found ')'"},
-        {"z^-1", 3, "column 3: expected a non-negative integer exponent but found '-'"},
-        {"z^1.5", 3, "column 3: expected a non-negative integer exponent but found '1.5'"},
-        {"z^2i", 3, "column 3: expected a non-negative integer exponent but found '2i'"},
-        {"z^", 3, "column 3: expected a non-negative integer exponent but found end of formula"},
+        {"z^-z", 4, "column 4: expected an exponent but found 'z'"},
+        {"z^2i", 3, "column 3: expected an exponent but found '2i'"},
+        {"z^", 3, "column 3: expected an exponent but found end of formula"},
+        {"sin z", 5, "column 5: expected '(' after sin but found 'z'"},
+        {"cos(z + c", 10, "column 10: expected ')' to close cos( but found end of formula"},
         {"z^65", 3, "column 3: the exponent 65 is too large; the limit is 64"},
         {"z^2^3", 4, "column 4: expected '+', '-', '*' or end of formula but found '^'"},
         {"", 1, "column 1: the formula is empty; write a polynomial in z such as 'z^2 + c'"},
@@ -162,8 +165,12 @@ TEST(Formula, ReportsErrorColumns) {
         {"z % 2", 3, "column 3: unexpected character '%'"},
         {"z\u00b2 + c", 2,
          "column 2: unexpected non-ASCII or control character (write powers as z^2)"},
-        {"zz + c", 1, "column 1: unknown name 'zz'; expected z, c, i, j, k, a number or '('"},
-        {"2iz", 2, "column 2: unknown name 'iz'; expected z, c, i, j, k, a number or '('"},
+        {"zz + c", 1,
+         "column 1: unknown name 'zz'; expected z, c, i, j, k, a number, '(' or a function such "
+         "as sin("},
+        {"2iz", 2,
+         "column 2: unknown name 'iz'; expected z, c, i, j, k, a number, '(' or a function such "
+         "as sin("},
         {"1.2.3", 1, "column 1: malformed number '1.2.'"},
         {"1e999 z", 1, "column 1: the number '1e999' is out of range"},
         {"z *", 4, "column 4: expected a number, i, j, k, z, c or '(' but found end of formula"},
@@ -176,6 +183,24 @@ TEST(Formula, ReportsErrorColumns) {
         } catch (const FormulaError& error) {
             EXPECT_EQ(error.column(), test.column);
             EXPECT_EQ(std::string(error.what()), test.message);
+        }
+    }
+}
+
+TEST(Formula, FunctionsAndRealPowersParseButDoNotExpand) {
+    // POV-Ray's hypercomplex functions and real powers are the bicomplex numbers' (their duplex
+    // form); a polynomial expansion refuses them at their column.
+    for (const auto& [text, column] :
+         {std::pair{"sin(z) + c", 1}, std::pair{"z^-1 + c", 2}, std::pair{"z^2 + 0.5*exp(z*i)", 11},
+          std::pair{"z^1.5 + c", 2}}) {
+        SCOPED_TRACE(text);
+        const Formula formula = Formula::parse(text);
+        try {
+            formula.expand(Quaternion(0.1));
+            ADD_FAILURE() << "expanded";
+        } catch (const FormulaError& error) {
+            EXPECT_EQ(error.column(), column);
+            EXPECT_NE(std::string(error.what()).find("bicomplex"), std::string::npos);
         }
     }
 }

@@ -200,6 +200,22 @@ Hypercomplex operator*(double s, const Hypercomplex& a) {
     return scaled;
 }
 
+std::array<std::complex<double>, 2> duplexForm(const Hypercomplex& q) {
+    return {std::complex<double>(q[0] - q[3], q[1] + q[2]),
+            std::complex<double>(q[0] + q[3], q[1] - q[2])};
+}
+
+Hypercomplex fromDuplexForm(const std::complex<double>& a, const std::complex<double>& b) {
+    return {0.5 * (a.real() + b.real()),
+            0.5 * (a.imag() + b.imag()),
+            0.5 * (a.imag() - b.imag()),
+            0.5 * (b.real() - a.real()),
+            0,
+            0,
+            0,
+            0};
+}
+
 double euclideanNorm(const Hypercomplex& a) {
     double sum = 0;
     for (double v : a)

@@ -22,6 +22,7 @@
 #pragma once
 
 #include <array>
+#include <complex>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -91,5 +92,10 @@ Hypercomplex operator-(const Hypercomplex& a, const Hypercomplex& b);
 Hypercomplex operator*(double s, const Hypercomplex& a);
 // The Euclidean norm of the components: the escape test's |z| in every algebra.
 double euclideanNorm(const Hypercomplex& a);
+
+// A bicomplex number's duplex form ((x - w) + (y + z) i, (x + w) + (y - z) i), an isomorphism
+// onto C x C with componentwise operations, and its inverse.
+std::array<std::complex<double>, 2> duplexForm(const Hypercomplex& q);
+Hypercomplex fromDuplexForm(const std::complex<double>& a, const std::complex<double>& b);
 
 }  // namespace quaternia

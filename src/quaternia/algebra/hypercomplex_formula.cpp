@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 
 #include "quaternia/algebra/formula_tree.h"
 #include "quaternia/util/error.h"
@@ -32,6 +33,46 @@ Hypercomplex negated(const Hypercomplex& a) {
     return -1.0 * a;
 }
 
+using Complex = std::complex<double>;
+
+// f(w) and f'(w) on the principal branches of std::complex.
+std::pair<Complex, Complex> complexFunction(FormulaFunction function, const Complex& w) {
+    const Complex one(1);
+    switch (function) {
+        case FormulaFunction::kExp:
+            return {std::exp(w), std::exp(w)};
+        case FormulaFunction::kLog:
+            return {std::log(w), one / w};
+        case FormulaFunction::kSin:
+            return {std::sin(w), std::cos(w)};
+        case FormulaFunction::kCos:
+            return {std::cos(w), -std::sin(w)};
+        case FormulaFunction::kTan:
+            return {std::tan(w), one / (std::cos(w) * std::cos(w))};
+        case FormulaFunction::kSinh:
+            return {std::sinh(w), std::cosh(w)};
+        case FormulaFunction::kCosh:
+            return {std::cosh(w), std::sinh(w)};
+        case FormulaFunction::kTanh:
+            return {std::tanh(w), one / (std::cosh(w) * std::cosh(w))};
+        case FormulaFunction::kAsin:
+            return {std::asin(w), one / std::sqrt(one - w * w)};
+        case FormulaFunction::kAcos:
+            return {std::acos(w), -one / std::sqrt(one - w * w)};
+        case FormulaFunction::kAtan:
+            return {std::atan(w), one / (one + w * w)};
+        case FormulaFunction::kAsinh:
+            return {std::asinh(w), one / std::sqrt(w * w + one)};
+        case FormulaFunction::kAcosh:
+            return {std::acosh(w), one / (std::sqrt(w - one) * std::sqrt(w + one))};
+        case FormulaFunction::kAtanh:
+            return {std::atanh(w), one / (one - w * w)};
+        case FormulaFunction::kReciprocal:
+            return {one / w, -one / (w * w)};
+    }
+    return {w, one};
+}
+
 }  // namespace
 
 double productBound(Algebra algebra) {
@@ -46,7 +87,7 @@ HypercomplexFormula::HypercomplexFormula(const Formula& formula, Algebra algebra
     if (formula.root() == nullptr)
         throw UserError("fractal.formula", "fractal.formula: the formula has no terms");
     compile(*formula.root(), c);
-    degree_ = degrees_.back();
+    degree_ = transcendental_ ? 2 : degrees_.back();
     normBound_ = bounds_.back();
     normBound_.resize(size_t(degree_) + 1, 0.0);
     topDegreeMinimum_ = productBound(algebra) == 1.0 ? topMinima_.back() : 0.0;
@@ -98,6 +139,17 @@ int HypercomplexFormula::compile(const FormulaNode& node, const Hypercomplex& c)
             top = std::pow(topMinima_[size_t(op.a)], node.exponent);
             break;
         }
+        case Kind::kFunction:
+        case Kind::kRealPower:
+            if (algebra_ != Algebra::kBicomplex) refuseTranscendental(node);
+            transcendental_ = true;
+            op.kind = node.kind == Kind::kFunction ? Operation::Kind::kFunction
+                                                   : Operation::Kind::kRealPower;
+            op.a = compile(*node.left, c);
+            op.value = int(node.function);
+            op.real = node.realExponent;
+            bound = {0.0};  // no norm bound: transcendental()
+            break;
         case Kind::kSum:
         case Kind::kDifference:
         case Kind::kProduct: {
@@ -179,6 +231,26 @@ void HypercomplexFormula::run(const Hypercomplex& z, const Hypercomplex& h, Hype
                 }
                 value[n] = power;
                 if constexpr (kSlope) slope[n] = powerSlope;
+                break;
+            }
+            case Kind::kFunction:
+            case Kind::kRealPower: {
+                // The duplex form: f applied to each complex component, and the chain rule
+                // f'(A) dA likewise.
+                const auto w = duplexForm(value[a]);
+                const auto dw = kSlope ? duplexForm(slope[a]) : std::array<Complex, 2>{};
+                std::array<Complex, 2> f, df;
+                for (size_t i = 0; i < 2; ++i) {
+                    const auto [fi, derivative] =
+                        op.kind == Kind::kFunction
+                            ? complexFunction(FormulaFunction(op.value), w[i])
+                            : std::pair{std::pow(w[i], op.real),
+                                        op.real * std::pow(w[i], op.real - 1)};
+                    f[i] = fi;
+                    df[i] = derivative * dw[i];
+                }
+                value[n] = fromDuplexForm(f[0], f[1]);
+                if constexpr (kSlope) slope[n] = fromDuplexForm(df[0], df[1]);
                 break;
             }
         }

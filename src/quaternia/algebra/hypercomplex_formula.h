@@ -45,6 +45,11 @@ class HypercomplexFormula {
     std::pair<Hypercomplex, Hypercomplex> evaluateWithDerivative(const Hypercomplex& z,
                                                                  const Hypercomplex& h) const;
 
+    // Whether the formula has functions or real powers (bicomplex only): then no norm bound
+    // holds (normBound, derivativeNormBound and topDegreeMinimum mean nothing), and degree() is
+    // taken as 2 for colouring.
+    bool transcendental() const { return transcendental_; }
+
     // P's coefficients, lowest degree first (size degree() + 1).
     const std::vector<double>& normBound() const { return normBound_; }
     // P'(r): a bound of the operator norm of Dp(z) for |z| <= r.
@@ -63,11 +68,15 @@ class HypercomplexFormula {
             kDifference,
             kProduct,
             kNegate,
-            kPower
+            kPower,
+            kFunction,  // a FormulaFunction of a, component by component in duplex form
+            kRealPower  // a ^ real, likewise
         };
         Kind kind = Kind::kZ;
         std::int32_t a = -1, b = -1;  // operand registers
-        std::int32_t value = 0;       // kConstant: index into constants_; kPower: the exponent
+        // kConstant: index into constants_; kPower: the exponent; kFunction: the function
+        std::int32_t value = 0;
+        double real = 0;  // kRealPower: the exponent
     };
     int compile(const FormulaNode& node, const Hypercomplex& c);
     // Runs the operations into the registers `value` (and `slope`, the derivative in direction
@@ -85,6 +94,7 @@ class HypercomplexFormula {
     std::vector<int> degrees_;
     std::vector<double> topMinima_;  // per register: the lower bound of its top-degree part
     double topDegreeMinimum_ = 0;
+    bool transcendental_ = false;
     std::vector<double> normBound_;
     int degree_ = 0;
 };

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <random>
 
 namespace quaternia {
@@ -129,6 +130,55 @@ TEST(HypercomplexFormula, TopDegreeMinimumIsTheProductOfNormsOfOneTopTerm) {
     EXPECT_EQ(compiled("z^2 - z*z + z + c", Algebra::kOctonion).topDegreeMinimum(), 0);
     EXPECT_EQ(compiled("z^2 + c", Algebra::kCoquaternion).topDegreeMinimum(), 0);
     EXPECT_EQ(compiled("z^2 - z*z + z + c", Algebra::kOctonion).degree(), 2);
+}
+
+TEST(HypercomplexFormula, BicomplexFunctionsActOnEachDuplexComponent) {
+    // POV-Ray's hypercomplex functions: f(q) is f applied to both complex components of the
+    // duplex form, with its derivative by the chain rule.
+    std::mt19937 rng(15);
+    const Hypercomplex c{0.1, -0.2, 0.3, 0.05, 0, 0, 0, 0};
+    const HypercomplexFormula formula = compiled(
+        "sin(z) + exp(z)*c + z^2.5 - reciprocal(z + 3) + atanh(0.5*z)", Algebra::kBicomplex, c);
+    EXPECT_TRUE(formula.transcendental());
+    const auto cd = duplexForm(c);
+    for (int trial = 0; trial < 20; ++trial) {
+        const Hypercomplex z = randomElement(rng, Algebra::kBicomplex, 0.9);
+        const auto w = duplexForm(z);
+        std::array<std::complex<double>, 2> expected;
+        for (size_t i = 0; i < 2; ++i)
+            expected[i] = std::sin(w[i]) + std::exp(w[i]) * cd[i] + std::pow(w[i], 2.5) -
+                          1.0 / (w[i] + 3.0) + std::atanh(0.5 * w[i]);
+        EXPECT_LT(euclideanNorm(formula.evaluate(z) - fromDuplexForm(expected[0], expected[1])),
+                  1e-12);
+        const Hypercomplex h = randomElement(rng, Algebra::kBicomplex, 1.0);
+        const double e = 1e-6;
+        const Hypercomplex difference =
+            (0.5 / e) * (formula.evaluate(z + e * h) - formula.evaluate(z - e * h));
+        EXPECT_LT(euclideanNorm(formula.evaluateWithDerivative(z, h).second - difference), 1e-6);
+    }
+}
+
+TEST(HypercomplexFormula, FunctionsAreRefusedOutsideTheBicomplexNumbers) {
+    for (Algebra algebra : allAlgebras()) {
+        if (algebra == Algebra::kBicomplex) continue;
+        for (const char* text : {"sin(z) + c", "z^1.5 + c", "z^-1 + c"}) {
+            try {
+                compiled(text, algebra);
+                ADD_FAILURE() << text << " in " << algebraName(algebra);
+            } catch (const FormulaError& error) {
+                EXPECT_NE(std::string(error.what()).find("bicomplex"), std::string::npos)
+                    << error.what();
+            }
+        }
+    }
+    // The quaternion expansion refuses them too, at the column of the function.
+    try {
+        Formula::parse("z^2 + cos(z)").expand(Quaternion(0.1));
+        ADD_FAILURE() << "cos expanded";
+    } catch (const FormulaError& error) {
+        EXPECT_EQ(error.column(), 7);
+        EXPECT_NE(std::string(error.what()).find("cos()"), std::string::npos) << error.what();
+    }
 }
 
 }  // namespace

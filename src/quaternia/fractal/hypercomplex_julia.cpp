@@ -51,21 +51,6 @@ double escapeRadiusFrom(double m, const std::vector<double>& b, int d, const std
     return hi;
 }
 
-// The duplex form of a bicomplex number: (x - w) + (y + z) i and (x + w) + (y - z) i.
-std::array<Complex, 2> duplex(const Hypercomplex& q) {
-    return {Complex(q[0] - q[3], q[1] + q[2]), Complex(q[0] + q[3], q[1] - q[2])};
-}
-Hypercomplex fromDuplex(const Complex& a, const Complex& b) {
-    return {0.5 * (a.real() + b.real()),
-            0.5 * (a.imag() + b.imag()),
-            0.5 * (a.imag() - b.imag()),
-            0.5 * (b.real() - a.real()),
-            0,
-            0,
-            0,
-            0};
-}
-
 Complex horner(const std::vector<Complex>& c, const Complex& w) {
     Complex value = 0;
     for (size_t k = c.size(); k-- > 0;)
@@ -140,7 +125,7 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
     : formula_(std::move(formula)), maxIterations_(maxIterations) {
     const Algebra algebra = formula_.algebra();
     const int d = formula_.degree();
-    if (d < 2) {
+    if (d < 2 && !formula_.transcendental()) {
         throw UserError("fractal.formula", "fractal.formula has degree " + std::to_string(d) +
                                                ", below 2; its orbits need not escape");
     }
@@ -150,6 +135,13 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
                             std::to_string(bailout));
     }
     const std::vector<double>& bound = formula_.normBound();
+    if (formula_.transcendental()) {
+        // Bicomplex functions (only they take them): no estimate and no Lipschitz bound on a
+        // ball (poles, branch points): Algorithm 2's fixed steps alone, POV-Ray's bailout 4.
+        kind_ = DistanceKind::kLipschitz;
+        bailout_ = escapeRadius_ = bailout == 0 ? 4.0 : bailout;
+        return;
+    }
     switch (algebra) {
         case Algebra::kOctonion:
         case Algebra::kQuaternion: {
@@ -185,7 +177,7 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
             const double pi = std::acos(-1.0);
             for (int k = 0; k < samples; ++k) {
                 const Complex w = std::polar(r, 2 * pi * k / samples);
-                const auto value = duplex(formula_.evaluate(fromDuplex(w, w)));
+                const auto value = duplexForm(formula_.evaluate(fromDuplexForm(w, w)));
                 for (int j = 0; j < samples; ++j) {
                     const Complex turn = std::polar(1.0, -2 * pi * j * k / samples);
                     for (int i = 0; i < 2; ++i)
@@ -221,6 +213,7 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
 }
 
 DistanceEstimate HypercomplexJuliaSet::estimate(const Hypercomplex& z0) const {
+    if (kind_ == DistanceKind::kLipschitz) return lipschitzDistance(z0);
     switch (formula_.algebra()) {
         case Algebra::kBicomplex:
             return bicomplexEstimate(z0);
@@ -234,8 +227,8 @@ DistanceEstimate HypercomplexJuliaSet::estimate(const Hypercomplex& z0) const {
 
 bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {
     const double bailoutSquared = bailout_ * bailout_;
-    if (formula_.algebra() == Algebra::kBicomplex) {
-        auto w = duplex(z0);
+    if (formula_.algebra() == Algebra::kBicomplex && !formula_.transcendental()) {
+        auto w = duplexForm(z0);
         for (int n = 0;; ++n) {
             // |q|^2 = (|a|^2 + |b|^2) / 2
             if (0.5 * (std::norm(w[0]) + std::norm(w[1])) > bailoutSquared) return false;
@@ -290,7 +283,7 @@ DistanceEstimate HypercomplexJuliaSet::bicomplexEstimate(const Hypercomplex& z0)
     // it is far outside its escape radius.
     DistanceEstimate result;
     const double bailoutSquared = bailout_ * bailout_;
-    std::array<Complex, 2> w = duplex(z0), slope = {Complex(1), Complex(1)};
+    std::array<Complex, 2> w = duplexForm(z0), slope = {Complex(1), Complex(1)};
     auto step = [&](size_t i) {
         slope[i] *= hornerDerivative(componentCoefficients_[i], w[i]);
         w[i] = horner(componentCoefficients_[i], w[i]);
@@ -376,6 +369,7 @@ DistanceEstimate HypercomplexJuliaSet::lipschitzDistance(const Hypercomplex& z0)
         radius[size_t(last + 1)] = std::sqrt(next2);
     }
     result.iterations = last;
+    if (formula_.transcendental()) return result;  // distance 0: no bound to take
     auto escapesWithin = [&](double delta) {
         double e = delta;
         for (int k = 0; k <= last; ++k) {
@@ -441,14 +435,14 @@ std::shared_ptr<const HypercomplexFractal> hypercomplexFractalFromScene(const Sc
     if (algebraDimension(algebra) == 8)
         for (size_t n = 0; n < 4; ++n)
             c[4 + n] = scene.fractal.cUpper[n];
-    Formula formula = [&] {
+    HypercomplexFormula formula = [&] {
         try {
-            return Formula::parse(scene.fractal.formula);
+            return HypercomplexFormula(Formula::parse(scene.fractal.formula), algebra, c);
         } catch (const FormulaError& e) {
             throw UserError("fractal.formula", std::string("fractal.formula: ") + e.what());
         }
     }();
-    HypercomplexJuliaSet set(HypercomplexFormula(formula, algebra, c), scene.fractal.maxIterations,
+    HypercomplexJuliaSet set(std::move(formula), scene.fractal.maxIterations,
                              scene.fractal.bailout);
     return std::make_shared<const HypercomplexFractal>(
         HypercomplexFractal{std::move(set), HypercomplexSlice(scene.slice, algebra)});
