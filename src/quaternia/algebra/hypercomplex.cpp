@@ -216,6 +216,13 @@ Hypercomplex fromDuplexForm(const std::complex<double>& a, const std::complex<do
             0};
 }
 
+double normSquared(const Hypercomplex& a) {
+    double sum = 0;
+    for (double x : a)
+        sum += x * x;
+    return sum;
+}
+
 double euclideanNorm(const Hypercomplex& a) {
     double sum = 0;
     for (double v : a)

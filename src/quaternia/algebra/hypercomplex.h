@@ -92,6 +92,8 @@ Hypercomplex operator-(const Hypercomplex& a, const Hypercomplex& b);
 Hypercomplex operator*(double s, const Hypercomplex& a);
 // The Euclidean norm of the components: the escape test's |z| in every algebra.
 double euclideanNorm(const Hypercomplex& a);
+// Its square, the sum of the squared components.
+double normSquared(const Hypercomplex& a);
 
 // A bicomplex number's duplex form ((x - w) + (y + z) i, (x + w) + (y - z) i), an isomorphism
 // onto C x C with componentwise operations, and its inverse.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "quaternia/fractal/escape_time.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
@@ -47,50 +48,6 @@ struct GeneralMap {  // any eq. 2.10 polynomial, with the bound P'(|z|) on the d
         return g * g;
     }
 };
-
-struct IterationLimits {
-    int maxIterations;
-    double bailoutSquared;
-    double escapeRadiusSquared;
-    int degree;
-    double estimateRadiusSquared;
-};
-
-template <typename Map>
-DistanceEstimate estimateWith(const Map& map, const IterationLimits& limits, const Quaternion& z0) {
-    DistanceEstimate result;
-    Quaternion z = z0;
-    double derivativeSquared = 1;
-    double r2 = normSquared(z);
-    double trap2 = r2;
-    int n = 0;  // z = z_n; the iterates z_0 .. z_{N-1} are tested
-    while (r2 <= limits.bailoutSquared) {
-        if (n + 1 >= limits.maxIterations)
-            return insideEstimate(std::sqrt(trap2), limits.maxIterations);
-        derivativeSquared *= map.gainSquared(r2);
-        z = map(z);
-        r2 = normSquared(z);
-        trap2 = std::min(trap2, r2);
-        ++n;
-    }
-    result.trap = std::sqrt(trap2);
-    result.escapeIteration = n;
-    // Escape beyond the certified radius is final, so iterating on cannot change membership;
-    // it takes the estimate where it is accurate.
-    int extra = 0;
-    if (r2 > limits.escapeRadiusSquared) {
-        for (; r2 < limits.estimateRadiusSquared && extra < kMaxContinuation; ++extra) {
-            derivativeSquared *= map.gainSquared(r2);
-            z = map(z);
-            r2 = normSquared(z);
-        }
-    }
-    result.iterations = n + extra;
-    // d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2) ln |z|^2.
-    result.distance = std::max(0.0, 0.25 * std::sqrt(r2 / derivativeSquared) * std::log(r2));
-    result.smoothIteration = smoothEscapeCount(n + extra, r2, limits.degree);
-    return result;
-}
 
 template <typename Map>
 bool containsWith(const Map& map, const IterationLimits& limits, const Quaternion& z0) {

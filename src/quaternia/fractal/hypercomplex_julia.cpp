@@ -5,6 +5,7 @@
 #include <complex>
 #include <string>
 
+#include "quaternia/fractal/escape_time.h"
 #include "quaternia/fractal/slice.h"
 #include "quaternia/util/error.h"
 
@@ -12,13 +13,6 @@ namespace quaternia {
 namespace {
 
 using Complex = std::complex<double>;
-
-double normSquared(const Hypercomplex& a) {
-    double sum = 0;
-    for (double x : a)
-        sum += x * x;
-    return sum;
-}
 
 double dotProduct(const Hypercomplex& a, const Hypercomplex& b) {
     double sum = 0;
@@ -246,35 +240,19 @@ bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {
 }
 
 DistanceEstimate HypercomplexJuliaSet::octonionEstimate(const Hypercomplex& z0) const {
-    DistanceEstimate result;
-    Hypercomplex z = z0;
-    double r2 = normSquared(z), trap2 = r2;
-    double derivative = 1;  // the running bound rho_n of |z'_n|
-    const double bailoutSquared = bailout_ * bailout_;
-    int n = 0;
-    while (r2 <= bailoutSquared) {
-        if (n + 1 >= maxIterations_) return insideEstimate(std::sqrt(trap2), maxIterations_);
-        derivative *= formula_.derivativeNormBound(std::sqrt(r2));
-        z = formula_.evaluate(z);
-        r2 = normSquared(z);
-        trap2 = std::min(trap2, r2);
-        ++n;
-    }
-    result.trap = std::sqrt(trap2);
-    result.escapeIteration = n;
-    int extra = 0;
-    const double estimateRadiusSquared = continuationRadiusSquared<double>(formula_.degree());
-    if (r2 > escapeRadius_ * escapeRadius_) {
-        for (; r2 < estimateRadiusSquared && extra < kMaxContinuation; ++extra) {
-            derivative *= formula_.derivativeNormBound(std::sqrt(r2));
-            z = formula_.evaluate(z);
-            r2 = normSquared(z);
+    // The quaternion loop (escape_time.h), with the running derivative bound P'(|z|).
+    struct Map {
+        const HypercomplexFormula& formula;
+        Hypercomplex operator()(const Hypercomplex& z) const { return formula.evaluate(z); }
+        double gainSquared(double r2) const {
+            const double gain = formula.derivativeNormBound(std::sqrt(r2));
+            return gain * gain;
         }
-    }
-    result.iterations = n + extra;
-    result.distance = std::max(0.0, 0.25 * std::sqrt(r2) / derivative * std::log(r2));
-    result.smoothIteration = smoothEscapeCount(n + extra, r2, formula_.degree());
-    return result;
+    };
+    const IterationLimits limits{maxIterations_, bailout_ * bailout_, escapeRadius_ * escapeRadius_,
+                                 formula_.degree(),
+                                 continuationRadiusSquared<double>(formula_.degree())};
+    return estimateWith(Map{formula_}, limits, z0);
 }
 
 DistanceEstimate HypercomplexJuliaSet::bicomplexEstimate(const Hypercomplex& z0) const {
