@@ -59,6 +59,48 @@ TEST(HypercomplexJulia, OctonionsInTheQuaternionSubalgebraDrawTheQuaternionSet) 
     EXPECT_GT(inside, 100);  // the test sees the set, not only its outside
 }
 
+TEST(HypercomplexJulia, OctonionRealFormsRunAsQuaternionsThroughAnIsometry) {
+    // z^2 + c with c outside the quaternion half, on a slice whose parts orthogonal to 1 and
+    // Im c span a plane: the SIMD engine's Fractal is a quaternion one (the lanes draw it), and
+    // it answers as the octonion arithmetic of the scalar engine does.
+    Scene scene = sceneIn(Algebra::kOctonion, {-0.2, 0.5, 0.1, 0.2, 0.15, -0.1, 0.2, 0.05});
+    scene.slice.axes = {1, 0, 0, 0, 0, 0, 0, 0,  //
+                        0, 1, 0, 0, 0, 0, 0, 0,  //
+                        0, 0, 0, 0, 0, 0, 1, 0};
+    for (const char* formula : {"z^2 + c", "z^3 - 0.5*z + c", "z^2 + (z - 1)*0.1 + i*c"}) {
+        scene.fractal.formula = formula;
+        scene.render.engine = RenderEngine::Simd;
+        const Fractal fast = Fractal::fromScene(scene);
+        scene.render.engine = RenderEngine::Scalar;
+        const Fractal reference = Fractal::fromScene(scene);
+        EXPECT_TRUE(fast.isQuaternion()) << formula;
+        EXPECT_FALSE(reference.isQuaternion());
+        EXPECT_NEAR(fast.escapeRadius(), reference.escapeRadius(), 1e-9) << formula;
+        std::mt19937 rng(28);
+        int inside = 0;
+        for (int trial = 0; trial < 2000; ++trial) {
+            const Point3d p = randomPoint(rng, 1.5);
+            const DistanceEstimate a = fast.estimate(p), b = reference.estimate(p);
+            ASSERT_EQ(a.inside, b.inside) << formula << " " << p;
+            EXPECT_EQ(a.escapeIteration, b.escapeIteration);
+            EXPECT_NEAR(a.distance, b.distance, 1e-9 * (1 + b.distance)) << formula << " " << p;
+            inside += a.inside;
+        }
+        EXPECT_GT(inside, 20) << formula;  // the test sees the set
+    }
+    // Three imaginary directions orthogonal to Im c: no isometry into H, the octonion path.
+    scene.fractal.formula = "z^2 + c";
+    scene.render.engine = RenderEngine::Simd;
+    scene.slice.axes = {0, 0, 1, 0, 0, 0, 0, 0,  //
+                        0, 0, 0, 1, 0, 0, 0, 0,  //
+                        0, 0, 0, 0, 0, 0, 1, 0};
+    EXPECT_FALSE(Fractal::fromScene(scene).isQuaternion());
+    // Neither for a formula with a quaternion coefficient.
+    scene.slice.axes.clear();
+    scene.fractal.formula = "i*z^2 + c";
+    EXPECT_FALSE(Fractal::fromScene(scene).isQuaternion());
+}
+
 TEST(HypercomplexJulia, NegatingTheOctonionBHalfIsAnAutomorphism) {
     // (a, b) -> (a, -b) keeps the Cayley-Dickson product and the norm: negating the b-half of
     // c and of the slice leaves every membership and estimate unchanged.

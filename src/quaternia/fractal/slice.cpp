@@ -56,7 +56,16 @@ Quaternion Slice::embed(const Point3d& p) const {
     return {p.x, p.y, p.z, w};
 }
 
+Slice Slice::isometry(const Quaternion& origin, const std::array<Quaternion, 3>& axes) {
+    Slice slice;
+    slice.isometryOrigin_ = origin;
+    slice.tangents_ = axes;
+    return slice;
+}
+
 Quaternion Slice::quaternionFromWorld(const Point3d& p) const {
+    if (isometryOrigin_)
+        return *isometryOrigin_ + tangents_[0] * p.x + tangents_[1] * p.y + tangents_[2] * p.z;
     return left_ * embed(p) * right_;
 }
 

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "quaternia/algebra/quaternion.h"
 #include "quaternia/algebra/vecmath.h"
@@ -24,6 +25,10 @@ class Slice {
   public:
     // The caller validates: normal with w != 0, left and right non-zero (they are normalised).
     explicit Slice(const SliceSettings& settings);
+    // The map p -> origin + x axes[0] + y axes[1] + z axes[2] for orthonormal axes and an
+    // origin orthogonal to them (an isometry onto its image, and |p| <= |q(p)|: the bounding
+    // sphere of the set is still the bailout's). Left and right are 1.
+    static Slice isometry(const Quaternion& origin, const std::array<Quaternion, 3>& axes);
 
     Quaternion quaternionFromWorld(const Point3d& p) const;
     // The images of the unit x, y and z directions under the (affine) map above: the columns of
@@ -37,13 +42,15 @@ class Slice {
     const Quaternion& right() const { return right_; }
 
   private:
+    Slice() = default;
     Quaternion embed(const Point3d& p) const;  // s(p)
 
-    std::array<double, 4> unitNormal_;  // s^ as (x, y, z, w)
-    double distance_;
-    Quaternion left_, right_;
-    std::array<Quaternion, 3> tangents_;
-    double stepScale_;
+    std::array<double, 4> unitNormal_{};  // s^ as (x, y, z, w)
+    double distance_ = 0;
+    Quaternion left_{1}, right_{1};
+    std::array<Quaternion, 3> tangents_{};
+    double stepScale_ = 1;
+    std::optional<Quaternion> isometryOrigin_;  // set by isometry()
 };
 
 // The rotation pair (l, r) for the six plane angles in degrees, planes (1,i), (1,j), (1,k),
