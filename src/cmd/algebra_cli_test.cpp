@@ -73,6 +73,16 @@ TEST_F(AlgebraCli, BicomplexFunctionsRender) {
     EXPECT_EQ(r.out.find("\"hits\":0,"), std::string::npos) << r.out;
 }
 
+TEST_F(AlgebraCli, OctonionFormulasTooLargeToMultiplyOutStillRender) {
+    // (z + i)^30 has 2^30 quaternion words: no expansion, so the octonion arithmetic draws it.
+    CommandResult r = run("render -o " + output() +
+                          " --width 8 --height 6 --set 'fractal.algebra=\"octonion\"' --set "
+                          "'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0.1, 0, 0, 0]' --set "
+                          "'fractal.formula=\"(z + i)^30 + c\"'");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(output()));
+}
+
 TEST_F(AlgebraCli, EveryAlgebraMeshes) {
     CommandResult r = run("mesh -o " + output("set.stl") +
                           " --set 'fractal.algebra=\"bicomplex\"' --set mesh.resolution=24");

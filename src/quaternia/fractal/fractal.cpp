@@ -23,11 +23,17 @@ std::optional<Fractal> octonionAsQuaternion(const Scene& scene,
                                             const HypercomplexFractal& octonion) {
     const HypercomplexFormula& formula = octonion.set.formula();
     if (formula.transcendental()) return std::nullopt;
-    const Formula parsed = Formula::parse(scene.fractal.formula);
     // The a_k, and that c is only in the constant term: the same terms for two values of c.
-    const Polynomial without = parsed.expand(Quaternion()),
-                     with = parsed.expand(Quaternion(0.37, 0.21, -0.13, 0.29));
-    const std::optional<RealForm> real = without.realForm(), realWith = with.realForm();
+    // (A formula too large to multiply out stays with the octonion arithmetic.)
+    std::optional<Polynomial> without, with;
+    try {
+        const Formula parsed = Formula::parse(scene.fractal.formula);
+        without = parsed.expand(Quaternion());
+        with = parsed.expand(Quaternion(0.37, 0.21, -0.13, 0.29));
+    } catch (const FormulaError&) {
+        return std::nullopt;
+    }
+    const std::optional<RealForm> real = without->realForm(), realWith = with->realForm();
     if (!real || !realWith || real->coefficients != realWith->coefficients) return std::nullopt;
     const Hypercomplex constant = formula.evaluate(Hypercomplex{});
     Hypercomplex u{};
@@ -75,7 +81,7 @@ std::optional<Fractal> octonionAsQuaternion(const Scene& scene,
     for (size_t a = 0; a < 3; ++a)
         if (std::abs(dot(vectors[0], vectors[a + 1])) > 1e-12) return std::nullopt;
     std::vector<Term> terms;
-    for (const Term& term : without.terms())
+    for (const Term& term : without->terms())
         if (term.degree() > 0) terms.push_back(term);
     terms.push_back(Term{{Quaternion(constant[0], length, 0, 0)}});
     return Fractal(
