@@ -10,6 +10,7 @@
 #include "fuzz/fuzz_check.h"
 #include "quaternia/algebra/complex_polynomial.h"
 #include "quaternia/algebra/formula.h"
+#include "quaternia/algebra/formula_tree.h"
 #include "quaternia/algebra/polynomial.h"
 #include "quaternia/util/error.h"
 
@@ -161,11 +162,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         return 0;
     }
     FUZZ_CHECK(formula.text() == text);
+    // Functions and real powers (the bicomplex numbers' only) parse but never expand: refused at
+    // their column.
+    const FormulaNode* transcendental = firstTranscendental(formula.root());
     try {
         checkPolynomial(formula.expand(Quaternion(-0.2, 0.6, 0.2, 0.2)));
         if (formula.usesC()) checkPolynomial(formula.expand(Quaternion(0)));
+        FUZZ_CHECK(transcendental == nullptr);
     } catch (const FormulaError& e) {
-        FUZZ_CHECK(e.column() == 0);  // expansion limits
+        // Expansion limits (column 0), or a function or real power at its column.
+        FUZZ_CHECK(e.column() == 0 ||
+                   (transcendental != nullptr && e.column() >= 1 && size_t(e.column()) <= size));
     }
     return 0;
 }
