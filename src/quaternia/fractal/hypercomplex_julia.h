@@ -86,6 +86,12 @@ class HypercomplexJuliaSet {
     double boundingRadius() const { return bailout_; }
     // Where orbits are certain to escape (octonions; the bailout for the other algebras).
     double escapeRadius() const { return escapeRadius_; }
+    // Bicomplex polynomials: duplex component i's complex polynomial (coefficients, lowest
+    // degree first) and its escape radius; empty and 0 for functions and the other algebras.
+    const std::vector<std::complex<double>>& componentCoefficients(size_t i) const {
+        return componentCoefficients_[i];
+    }
+    double componentEscapeRadius(size_t i) const { return componentEscapeRadius_[i]; }
 
   private:
     DistanceEstimate octonionEstimate(const Hypercomplex& z0) const;

@@ -41,6 +41,12 @@ struct LaneConstants {
     bool realThreeNumbers;
     bool realForm;  // realCoefficients holds the a_k (any precision)
     LaneVector<V> realCoefficients;
+    // A bicomplex polynomial (LaneFractal::bicomplex; bicomplex_lanes-inl.h): each duplex
+    // component's coefficients, lowest degree first, as real and imaginary parts; whether both
+    // are w^2 + c_i; their escape radii squared.
+    bool bicomplex = false, bicomplexSquare = false;
+    LaneVector<V> bicomplexReal[2], bicomplexImaginary[2];
+    V componentEscapeRadiusSquared[2];
 
     // Float lanes take the fractal through LaneFractal::withComplexConstant, which changes no
     // estimate, membership or gradient product: their quadratic loop then needs c = c.w + c.x i.
@@ -59,6 +65,27 @@ struct LaneConstants {
         realThreeNumbers =
             sizeof(T) == 4 && !threeNumbers && certified && !f.realCoefficients.empty();
         realForm = !f.realCoefficients.empty();
+        if (f.bicomplex) {
+            bicomplex = true;
+            threeNumbers = realThreeNumbers = false;
+            bicomplexSquare = true;
+            for (size_t i = 0; i < 2; ++i) {
+                const auto& coefficients = f.bicomplex->coefficients[i];
+                // The duplex form's coefficients come from a discrete Fourier transform: exact
+                // up to rounding.
+                bicomplexSquare = bicomplexSquare && coefficients.size() == 3 &&
+                                  std::abs(coefficients[2] - 1.0) < 1e-12 &&
+                                  std::abs(coefficients[1]) < 1e-12;
+                for (const auto& a : coefficients) {
+                    bicomplexReal[i].push_back(hn::Set(d, T(a.real())));
+                    bicomplexImaginary[i].push_back(hn::Set(d, T(a.imag())));
+                }
+                componentEscapeRadiusSquared[i] =
+                    hn::Set(d, T(f.bicomplex->escapeRadiusSquared[i]));
+            }
+        } else {
+            componentEscapeRadiusSquared[0] = componentEscapeRadiusSquared[1] = hn::Zero(d);
+        }
         for (double a : f.realCoefficients)
             realCoefficients.push_back(hn::Set(d, T(a)));
         auto lanes = [&](const std::array<double, 4>& q, double factor = 1) {
@@ -566,6 +593,13 @@ HWY_INLINE void estimateThreeNumbers(D d, const LaneConstants<D>& k,
         g[j].template finish<kOrbit>(d, k, n, result[j], counters);
 }
 
+// Bicomplex polynomials' estimates (bicomplex_lanes-inl.h, included after this file).
+template <bool kOrbit, size_t K, class D>
+HWY_INLINE void estimateBicomplex(D d, const LaneConstants<D>& k,
+                                  const QuaternionT<hn::Vec<D>> (&q)[K],
+                                  const hn::Mask<D> (&live)[K], LaneEstimate<D> (&result)[K],
+                                  LaneCounters& counters);
+
 // The estimates at the current points of the rays in the lanes (o + t d, through the slice):
 // live lanes, their t, and the estimates. False when no lane holds a ray.
 template <bool kQuadratic, size_t K, class D, class T>
@@ -587,7 +621,9 @@ HWY_INLINE bool estimateAlongRays(D d, const LaneConstants<D>& k, const RayLanes
                                             : k.quaternionFromWorld(x, y, z);
     }
     if (!anyLive) return false;
-    if (kQuadratic && k.threeNumbers) {
+    if (k.bicomplex) {
+        estimateBicomplex<false>(d, k, q, live, e, counters);
+    } else if (kQuadratic && k.threeNumbers) {
         estimateThreeNumbers<false, ThreeNumbersGroup<D>>(d, k, q, live, e, counters);
     } else if (!kQuadratic && k.realThreeNumbers) {
         estimateThreeNumbers<false, RealThreeNumbersGroup<D>>(d, k, q, live, e, counters);

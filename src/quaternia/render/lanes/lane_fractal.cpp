@@ -106,8 +106,45 @@ LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
     return lanes;
 }
 
+std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Precision precision) {
+    const HypercomplexFractal* other = fractal.hypercomplex();
+    if (!other) return std::nullopt;
+    const HypercomplexJuliaSet& set = other->set;
+    const HypercomplexFormula& formula = set.formula();
+    if (formula.algebra() != Algebra::kBicomplex || formula.transcendental()) return std::nullopt;
+    const double bailoutSquared = set.bailout() * set.bailout();
+    Bicomplex bicomplex;
+    for (size_t i = 0; i < 2; ++i) {
+        bicomplex.coefficients[i] = set.componentCoefficients(i);
+        bicomplex.escapeRadiusSquared[i] =
+            set.componentEscapeRadius(i) * set.componentEscapeRadius(i);
+    }
+    // Every escape of |q| then has a component beyond its escape radius: |a|^2 <= R_1^2 and
+    // |b|^2 <= R_2^2 give |q|^2 <= (R_1^2 + R_2^2) / 2. The cap keeps float lanes' running
+    // derivatives finite up to the bailout (larger bailouts take the scalar reference).
+    if (2 * bailoutSquared < bicomplex.escapeRadiusSquared[0] + bicomplex.escapeRadiusSquared[1] ||
+        set.bailout() > 100)
+        return std::nullopt;
+    // The slice map (affine, HypercomplexSlice) followed by the duplex map, linear.
+    auto duplex = [](const Hypercomplex& q) {
+        const auto [a, b] = duplexForm(q);
+        return std::array<double, 4>{a.real(), a.imag(), b.real(), b.imag()};
+    };
+    LaneFractal lanes;
+    lanes.origin = duplex(other->slice.fromWorld(Point3d(0, 0, 0)));
+    for (size_t axis = 0; axis < 3; ++axis)
+        lanes.axes[axis] = duplex(other->slice.tangents()[axis]);
+    lanes.degree = formula.degree();
+    lanes.maxIterations = set.maxIterations();
+    lanes.bailoutSquared = lanes.escapeRadiusSquared = bailoutSquared;
+    lanes.stepScale = 1 / other->slice.stretch();
+    lanes.precision = precision;
+    lanes.bicomplex = std::move(bicomplex);
+    return lanes;
+}
+
 LaneFractal LaneFractal::withComplexConstant() const {
-    if (program && realCoefficients.empty()) return *this;
+    if (bicomplex || (program && realCoefficients.empty())) return *this;
     const Vector3d imaginary(c[1], c[2], c[3]);
     const double length = std::sqrt(dot(imaginary, imaginary));
     if (!(length > 0)) return *this;  // c is real already

@@ -27,6 +27,8 @@ concept QuaternionComponent = !std::is_arithmetic_v<V>;
 // After the programs' lanes, which LaneConstants holds:
 #include "quaternia/render/lanes/estimate_lanes-inl.h"
 #include "quaternia/render/lanes/gradient_lanes-inl.h"
+// After the estimate's and the gradient's helpers, which it shares:
+#include "quaternia/render/lanes/bicomplex_lanes-inl.h"
 
 // The mask as bits, lane i at bit i (at most 64 lanes: kLaneGroups vectors of 16 floats).
 template <class D>
@@ -82,7 +84,7 @@ HWY_INLINE void marchBatch(D d, const LaneConstants<D>& k, RayLanes<T>& rayLanes
 template <class Work>
 void run(const LaneFractal& fractal, const Work& work) {
     auto withForm = [&](auto d) {
-        if (fractal.degree == 2 && !fractal.program) {
+        if (fractal.degree == 2 && !fractal.program && !fractal.bicomplex) {
             work(d, std::true_type{});
         } else {
             work(d, std::false_type{});

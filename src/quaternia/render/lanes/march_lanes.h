@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <complex>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -49,9 +50,23 @@ struct LaneFractal {
     int maxIterations = 1;
     double bailoutSquared = 4, escapeRadiusSquared = 4, stepScale = 1;
     Precision precision = Precision::Single;
+    // A bicomplex polynomial (HypercomplexJuliaSet's duplex form, hypercomplex_julia.h): the
+    // slice then maps into duplex coordinates, origin and axes holding (Re a, Im a, Re b, Im b)
+    // of (a, b) = duplexForm(q), and the set iterates two complex polynomials; the escape test
+    // is |q|^2 = (|a|^2 + |b|^2) / 2 > bailoutSquared. Empty for quaternions.
+    struct Bicomplex {
+        std::array<std::vector<std::complex<double>>, 2> coefficients;  // lowest degree first
+        std::array<double, 2> escapeRadiusSquared{};
+    };
+    std::optional<Bicomplex> bicomplex;
 
     // The power form where the polynomial has it (d <= kMaxLaneDegree), else the program.
     static LaneFractal from(const Fractal& fractal, Precision precision);
+    // The lanes of a bicomplex polynomial (not functions) whose bailout makes every escape of
+    // |q| an escape of one duplex component (bailout^2 >= (R_1^2 + R_2^2) / 2, the default
+    // bailout 4 for z^2 + c with |c| up to about 2): the scalar reference's estimate then never
+    // needs its Lipschitz fallback. Nothing for any other fractal.
+    static std::optional<LaneFractal> fromBicomplex(const Fractal& fractal, Precision precision);
 
     // The same object seen through the rotation phi of the imaginary 3-space that takes Im c
     // onto the i axis: c becomes the complex Re c + |Im c| i and the slice map is followed by

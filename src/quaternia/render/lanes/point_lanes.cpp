@@ -46,7 +46,10 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
         const hn::Mask<D> live[1] = {hn::FirstN(d, count)};
         const auto x = hn::Load(d, in.x), y = hn::Load(d, in.y), z = hn::Load(d, in.z);
         LaneEstimate<D> estimates[1];
-        if (kQuadratic && k.threeNumbers) {
+        if (k.bicomplex) {
+            const QuaternionT<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
+            estimateBicomplex<kOrbit>(d, k, q, live, estimates, counters);
+        } else if (kQuadratic && k.threeNumbers) {
             const QuaternionT<hn::Vec<D>> u[1] = {k.loopFromWorld(x, y, z)};
             estimateThreeNumbers<kOrbit, ThreeNumbersGroup<D>>(d, k, u, live, estimates, counters);
         } else if (!kQuadratic && k.realThreeNumbers) {
@@ -121,7 +124,9 @@ void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& poi
             }
             const V m = hn::Load(d, iterationCounts);
             const int fewest = int(hn::GetLane(hn::MinOfLanes(d, m)));
-            if constexpr (kQuadratic && sizeof(T) == 4) {
+            if (k.bicomplex) {
+                bicomplexGradient(d, k, x, y, z, m, fewest, most, gx, gy, gz, counters);
+            } else if constexpr (kQuadratic && sizeof(T) == 4) {
                 threeNumberGradient(d, k, x, y, z, m, fewest, most, gx, gy, gz, counters);
             } else {
                 quaternionGradient<kQuadratic>(d, k, x, y, z, m, fewest, most, gx, gy, gz,
