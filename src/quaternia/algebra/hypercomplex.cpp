@@ -223,6 +223,13 @@ double normSquared(const Hypercomplex& a) {
     return sum;
 }
 
+double dotProduct(const Hypercomplex& a, const Hypercomplex& b) {
+    double sum = 0;
+    for (size_t n = 0; n < a.size(); ++n)
+        sum += a[n] * b[n];
+    return sum;
+}
+
 double euclideanNorm(const Hypercomplex& a) {
     double sum = 0;
     for (double v : a)

@@ -92,6 +92,8 @@ Hypercomplex operator-(const Hypercomplex& a, const Hypercomplex& b);
 Hypercomplex operator*(double s, const Hypercomplex& a);
 // The Euclidean norm of the components: the escape test's |z| in every algebra.
 double euclideanNorm(const Hypercomplex& a);
+// The Euclidean inner product of the components.
+double dotProduct(const Hypercomplex& a, const Hypercomplex& b);
 // Its square, the sum of the squared components.
 double normSquared(const Hypercomplex& a);
 

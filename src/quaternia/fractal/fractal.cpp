@@ -6,89 +6,33 @@
 #include <vector>
 
 #include "quaternia/algebra/formula.h"
+#include "quaternia/fractal/octonion_fold.h"
 
 namespace quaternia {
 
 namespace {
 
-// An octonion formula sum a_k z^k + C with real a_k, C = p(0) (docs/methods.md, Other algebras):
-// z_n stays in span{1, Im z_0, Im C}, and its orbit depends only on Re z, the component of Im z
-// along u = Im C / |Im C| and the length of the rest, exactly as for quaternions. Where the
-// slice's points have their parts orthogonal to 1 and u in a plane W (the default slice does),
-// q -> (Re q, <Im q, u>, <q, w_1>, <q, w_2>) is an isometry of the slice into H that carries the
-// octonion orbit to the quaternion orbit of the same formula with c' = Re C + |Im C| i: the same
-// membership and estimates, so the quaternion paths (the SIMD lanes) draw it. Nothing when the
-// formula or the slice does not have that form.
+// An octonion real form (octonion_fold.h) on a slice whose points have their parts orthogonal to
+// 1 and u = Im C / |Im C| in a plane W (the default slice does): the fold is then linear, an
+// isometry of the slice into H, q -> (Re q, <Im q, u>, <q, w_1>, <q, w_2>), and the quaternion
+// set of the folded formula through that slice has the same membership and estimates, so the
+// quaternion paths (the SIMD lanes, the mesher) draw it. Nothing when the formula or the slice
+// does not have that form.
 std::optional<Fractal> octonionAsQuaternion(const Scene& scene,
                                             const HypercomplexFractal& octonion) {
-    const HypercomplexFormula& formula = octonion.set.formula();
-    if (formula.transcendental()) return std::nullopt;
-    // The a_k, and that c is only in the constant term: the same terms for two values of c.
-    // (A formula too large to multiply out stays with the octonion arithmetic.)
-    std::optional<Polynomial> without, with;
-    try {
-        const Formula parsed = Formula::parse(scene.fractal.formula);
-        without = parsed.expand(Quaternion());
-        with = parsed.expand(Quaternion(0.37, 0.21, -0.13, 0.29));
-    } catch (const FormulaError&) {
-        return std::nullopt;
-    }
-    const std::optional<RealForm> real = without->realForm(), realWith = with->realForm();
-    if (!real || !realWith || real->coefficients != realWith->coefficients) return std::nullopt;
-    const Hypercomplex constant = formula.evaluate(Hypercomplex{});
-    Hypercomplex u{};
-    for (size_t n = 1; n < 8; ++n)
-        u[n] = constant[n];
-    const double length = euclideanNorm(u);
-    if (length > 0)
-        u = (1 / length) * u;
-    else
-        u[1] = 1;
-    // The parts of the slice's origin and axes orthogonal to 1 and u, and a basis of their span.
-    const HypercomplexSlice& slice = octonion.slice;
-    const std::array<Hypercomplex, 4> vectors = {slice.fromWorld(Point3d(0, 0, 0)),
-                                                 slice.tangents()[0], slice.tangents()[1],
-                                                 slice.tangents()[2]};
-    auto dot = [](const Hypercomplex& a, const Hypercomplex& b) {
-        double sum = 0;
-        for (size_t n = 0; n < 8; ++n)
-            sum += a[n] * b[n];
-        return sum;
-    };
-    auto orthogonalPart = [&](Hypercomplex x) {
-        x[0] = 0;
-        return x - dot(x, u) * u;
-    };
-    std::vector<Hypercomplex> basis;
-    for (const Hypercomplex& v : vectors) {
-        Hypercomplex rest = orthogonalPart(v);
-        for (const Hypercomplex& b : basis)
-            rest = rest - dot(rest, b) * b;
-        const double size = euclideanNorm(rest);
-        if (size <= 1e-12 * std::max(1.0, euclideanNorm(v))) continue;
-        if (basis.size() == 2) return std::nullopt;  // W has more than two dimensions
-        basis.push_back((1 / size) * rest);
-    }
-    while (basis.size() < 2)
-        basis.push_back(Hypercomplex{});
-    auto toQuaternion = [&](const Hypercomplex& x) {
-        Hypercomplex im = x;
-        im[0] = 0;
-        return Quaternion(x[0], dot(im, u), dot(x, basis[0]), dot(x, basis[1]));
-    };
+    std::optional<OctonionFold> fold = foldOctonion(scene.fractal.formula, octonion);
     // The lanes' bounding sphere is the bailout's: only slices whose origin is orthogonal to
     // the axes (as the default slice's 0 is).
-    for (size_t a = 0; a < 3; ++a)
-        if (std::abs(dot(vectors[0], vectors[a + 1])) > 1e-12) return std::nullopt;
-    std::vector<Term> terms;
-    for (const Term& term : without->terms())
-        if (term.degree() > 0) terms.push_back(term);
-    terms.push_back(Term{{Quaternion(constant[0], length, 0, 0)}});
+    if (!fold || fold->rows.size() > 4 || !fold->originOrthogonal) return std::nullopt;
+    auto column = [&](size_t c) {
+        std::array<double, 4> q{};
+        for (size_t r = 0; r < fold->rows.size(); ++r)
+            q[r] = fold->rows[r][c];
+        return Quaternion(q[0], q[1], q[2], q[3]);
+    };
     return Fractal(
-        JuliaSet(Polynomial(std::move(terms)), scene.fractal.maxIterations, scene.fractal.bailout),
-        Slice::isometry(
-            toQuaternion(vectors[0]),
-            {toQuaternion(vectors[1]), toQuaternion(vectors[2]), toQuaternion(vectors[3])}));
+        JuliaSet(std::move(fold->polynomial), scene.fractal.maxIterations, scene.fractal.bailout),
+        Slice::isometry(column(0), {column(1), column(2), column(3)}));
 }
 
 }  // namespace

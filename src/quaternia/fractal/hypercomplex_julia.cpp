@@ -14,13 +14,6 @@ namespace {
 
 using Complex = std::complex<double>;
 
-double dotProduct(const Hypercomplex& a, const Hypercomplex& b) {
-    double sum = 0;
-    for (size_t n = 0; n < a.size(); ++n)
-        sum += a[n] * b[n];
-    return sum;
-}
-
 // The positive root R of m r^d - sum_{k<d} b_k r^k - r: for |z| > R, |p(z)| > |z| and the orbit
 // tends to infinity (as Polynomial::escapeRadius; b[1] already holds the "+ r").
 double escapeRadiusFrom(double m, const std::vector<double>& b, int d, const std::string& what) {
@@ -380,7 +373,12 @@ double HypercomplexJuliaSet::logRadiusAfter(const Hypercomplex& z0, int iteratio
 
 int HypercomplexJuliaSet::gradientIterations(const Hypercomplex& z0) const {
     const DistanceEstimate e = estimate(z0);
-    return e.inside ? maxIterations_ - 1 : std::min(e.escapeIteration, maxIterations_ - 1);
+    if (e.inside) return maxIterations_ - 1;
+    // Octonions as the quaternions (JuliaSet::gradientIterations): the iterate where the
+    // estimate was taken, so that the quaternion paths that draw octonion real forms (the SIMD
+    // lanes through the fold, octonion_fold.h) shade alike.
+    if (formula_.algebra() == Algebra::kOctonion) return e.iterations;
+    return std::min(e.escapeIteration, maxIterations_ - 1);
 }
 
 std::array<double, 3> HypercomplexJuliaSet::potentialGradient(

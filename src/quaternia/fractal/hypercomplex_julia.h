@@ -70,7 +70,8 @@ class HypercomplexJuliaSet {
     DistanceEstimate estimate(const Hypercomplex& z0) const;
     bool contains(const Hypercomplex& z0) const;
     // ln|z_M| after exactly M iterations (or where it overflows): the potential whose gradient
-    // is the normal; and the M the normal takes at z0 (its escape iteration, at most N).
+    // is the normal; and the M the normal takes at z0 (its escape iteration, at most N; for
+    // octonions, as for quaternions, the iterate where the estimate was taken).
     double logRadiusAfter(const Hypercomplex& z0, int iterations) const;
     int gradientIterations(const Hypercomplex& z0) const;
     // The gradient of |z_M|^2 along the slice's three tangents (the chain rule through Dp), M =

@@ -38,7 +38,7 @@ LaneTileRenderer::LaneTileRenderer(const LaneFractal& lanes, const Camera& camer
       samples_(samples),
       shadowCylinders_(shadowCylinders),
       adaptive_(adaptive),
-      boundingRadius_(std::sqrt(lanes.bailoutSquared)),
+      boundingRadius_(lanes.boundingRadius),
       lightConstants_(shader.lightConstants()),
       coneRatio_(coneRatio(camera)) {}
 
@@ -51,7 +51,7 @@ void LaneTileRenderer::rebind(const LaneFractal& lanes, const Camera& camera, co
     march_ = {march.epsilon, march.pixelAngle, march.maxSteps, march.relaxation};
     samples_ = samples;
     adaptive_ = adaptive;
-    boundingRadius_ = std::sqrt(lanes.bailoutSquared);
+    boundingRadius_ = lanes.boundingRadius;
     lightConstants_ = shader.lightConstants();
     coneRatio_ = coneRatio(camera);
 }

@@ -204,15 +204,15 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
       windowY0_(window.y0),
       result_(result),
       rows_(result, rendersSamples(scene.render, options), window.x0, window.y0) {
-    // The lanes take the quaternions and bicomplex polynomials; the other algebras run the
-    // scalar reference, by fixed steps where their distance is only a short proven bound
-    // (hypercomplex_julia.h).
+    // The lanes take the quaternions, bicomplex polynomials and octonion real forms; the other
+    // algebras run the scalar reference, by fixed steps where their distance is only a short proven
+    // bound (hypercomplex_julia.h).
     if (scene.render.engine == RenderEngine::Simd &&
         scene.render.method == MarchMethod::SphereTracing) {
         if (fractal_.isQuaternion())
             lanes_ = LaneFractal::from(fractal_, scene.render.precision);
-        else
-            lanes_ = LaneFractal::fromBicomplex(fractal_, scene.render.precision);
+        else if (!(lanes_ = LaneFractal::fromBicomplex(fractal_, scene.render.precision)))
+            lanes_ = LaneFractal::fromOctonion(scene, fractal_, scene.render.precision);
     }
     shader_.toDisplay(&backgroundDisplay_, 1);
 }

@@ -56,10 +56,11 @@ struct ThreeNumberTangents {
     ThreeNumberTangents(const LaneConstants<D>& k, V x, V y, V z) {
         const QuaternionT<V> u = k.loopFromWorld(x, y, z);
         a = u.w, b = u.x, p = hn::MulAdd(u.z, u.z, u.y * u.y);
-        const QuaternionT<V>* axes[3] = {&k.loopAxis0, &k.loopAxis1, &k.loopAxis2};
+        QuaternionT<V> axes[3];
+        k.tangentsAt(x, y, z, true, axes);
         for (int i = 0; i < 3; ++i) {
-            dA[i] = axes[i]->w, dB[i] = axes[i]->x;
-            dR[i] = hn::MulAdd(u.z, axes[i]->z, u.y * axes[i]->y);
+            dA[i] = axes[i].w, dB[i] = axes[i].x;
+            dR[i] = hn::MulAdd(u.z, axes[i].z, u.y * axes[i].y);
         }
     }
 
@@ -200,7 +201,9 @@ HWY_INLINE void quaternionGradient(D d, const LaneConstants<D>& k, V x, V y, V z
         }
     };
     auto z = k.quaternionFromWorld(x, y, z0);
-    QuaternionT<V> t0 = k.axis0, t1 = k.axis1, t2 = k.axis2;
+    QuaternionT<V> axes[3];
+    k.tangentsAt(x, y, z0, false, axes);
+    QuaternionT<V> t0 = axes[0], t1 = axes[1], t2 = axes[2];
     // One iteration of the point and the tangents (iterateEachLaneItsCount's `hold`).
     iterateEachLaneItsCount(d, m, fewest, most, counters, [&](const auto& hold) {
         QuaternionT<V> n0, n1, n2, nz;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 
+#include "quaternia/fractal/octonion_fold.h"
 #include "quaternia/render/lanes/march_lanes.h"
 
 namespace quaternia {
@@ -101,6 +102,7 @@ LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
     lanes.escapeRadiusSquared = set.escapeRadius() * set.escapeRadius();
     lanes.stepScale = slice.stepScale();
     lanes.precision = precision;
+    lanes.boundingRadius = set.bailout();  // |p| <= |s(p)| (slice.h)
     if (std::optional<QuadraticTerm> term = polynomial.quadraticTerm(); term && lanes.program)
         iterateConjugate(lanes, *term);
     return lanes;
@@ -139,12 +141,45 @@ std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Pr
     lanes.bailoutSquared = lanes.escapeRadiusSquared = bailoutSquared;
     lanes.stepScale = 1 / other->slice.stretch();
     lanes.precision = precision;
+    lanes.boundingRadius = other->slice.boundingRadius(set.bailout());
     lanes.bicomplex = std::move(bicomplex);
     return lanes;
 }
 
+std::optional<LaneFractal> LaneFractal::fromOctonion(const Scene& scene, const Fractal& fractal,
+                                                     Precision precision) {
+    const HypercomplexFractal* other = fractal.hypercomplex();
+    if (!other || other->set.formula().algebra() != Algebra::kOctonion) return std::nullopt;
+    std::optional<OctonionFold> fold = foldOctonion(scene.fractal.formula, *other);
+    if (!fold) return std::nullopt;
+    // The folded formula's lanes, then the fold's rows in place of the slice map.
+    const Fractal folded(
+        JuliaSet(fold->polynomial, scene.fractal.maxIterations, scene.fractal.bailout),
+        Slice(SliceSettings{}));
+    LaneFractal lanes = from(folded, precision);
+    if (lanes.squareMap) return std::nullopt;  // (a conjugate would multiply the rows)
+    lanes.origin = {};
+    lanes.axes = {};
+    lanes.foldRows = {};
+    for (size_t r = 0; r < fold->rows.size(); ++r) {
+        const std::array<double, 4>& row = fold->rows[r];
+        if (r < 4) {
+            lanes.origin[r] = row[0];
+            for (size_t a = 0; a < 3; ++a)
+                lanes.axes[a][r] = row[a + 1];
+        } else {
+            lanes.foldRows[r - 4] = row;
+        }
+    }
+    lanes.folded = true;
+    lanes.stepScale = 1 / other->slice.stretch();
+    lanes.boundingRadius = other->slice.boundingRadius(std::sqrt(lanes.bailoutSquared));
+    return lanes;
+}
+
 LaneFractal LaneFractal::withComplexConstant() const {
-    if (bicomplex || (program && realCoefficients.empty())) return *this;
+    // (A folded octonion's c is complex already.)
+    if (bicomplex || folded || (program && realCoefficients.empty())) return *this;
     const Vector3d imaginary(c[1], c[2], c[3]);
     const double length = std::sqrt(dot(imaginary, imaginary));
     if (!(length > 0)) return *this;  // c is real already

@@ -25,6 +25,8 @@ concept QuaternionComponent = !std::is_arithmetic_v<V>;
 // After the formulas they use:
 #include "quaternia/render/lanes/program_lanes-inl.h"
 // After the programs' lanes, which LaneConstants holds:
+#include "quaternia/render/lanes/lane_constants-inl.h"
+// After the constants:
 #include "quaternia/render/lanes/estimate_lanes-inl.h"
 #include "quaternia/render/lanes/gradient_lanes-inl.h"
 // After the estimate's and the gradient's helpers, which it shares:

@@ -59,6 +59,15 @@ struct LaneFractal {
         std::array<double, 2> escapeRadiusSquared{};
     };
     std::optional<Bicomplex> bicomplex;
+    // An octonion real form folded onto the quaternions (octonion_fold.h) through a slice on
+    // which the fold is not linear: origin and axes hold the first four rows of
+    // OctonionFold::rows (zero where absent) and foldRows the others, and the lanes iterate
+    // (row 0, row 1, sqrt(row 2^2 + ... + row 5^2), 0), whose orbit has the octonion orbit's
+    // radii. Each row as (value at 0, d/dx, d/dy, d/dz).
+    bool folded = false;
+    std::array<std::array<double, 4>, 2> foldRows{};
+    // The set lies in the ball of this radius about the 3D origin.
+    double boundingRadius = 2;
 
     // The power form where the polynomial has it (d <= kMaxLaneDegree), else the program.
     static LaneFractal from(const Fractal& fractal, Precision precision);
@@ -67,6 +76,10 @@ struct LaneFractal {
     // bailout 4 for z^2 + c with |c| up to about 2): the scalar reference's estimate then never
     // needs its Lipschitz fallback. Nothing for any other fractal.
     static std::optional<LaneFractal> fromBicomplex(const Fractal& fractal, Precision precision);
+    // The lanes of an octonion real form (octonion_fold.h; formula as written in the scene),
+    // on any slice. Nothing for any other fractal.
+    static std::optional<LaneFractal> fromOctonion(const Scene& scene, const Fractal& fractal,
+                                                   Precision precision);
 
     // The same object seen through the rotation phi of the imaginary 3-space that takes Im c
     // onto the i axis: c becomes the complex Re c + |Im c| i and the slice map is followed by
