@@ -195,6 +195,7 @@ TEST(MarchLanes, ProgramEstimatesMatchTheScalarReference) {
     expectEstimatesMatch(formulaFractal("z^2 + 0.1*z + c"), 5);
     expectEstimatesMatch(formulaFractal("(1+0.2i) z (1-0.1k) z + c"), 6);
     expectEstimatesMatch(formulaFractal("(0.3+0.1j) z (1.5-1i) z (1+0.2k) + c"), 7);
+    expectEstimatesMatch(formulaFractal("z (0.5+0.1j) z + c"), 8);
 }
 
 // A single quadratic term's conjugate computes what the term computes: A(w^2) + c' at w = p1 z
