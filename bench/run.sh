@@ -2,6 +2,8 @@
 # Prints ms per frame and rays/s for fixed, named scenes: medians of several runs of the
 # quaternia binary (these machines are shared and noisy), then the Google Benchmark suite.
 # Usage: bench/run.sh [runs]   (build first: cmake --build build)
+#        rows=REGEX bench/run.sh [runs]   only the frame rows whose names match (no films, meshes
+#        or Google Benchmark suite), e.g. rows=algebra bench/run.sh 5
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-5}
@@ -12,6 +14,7 @@ trap 'rm -rf "$out"' EXIT
 
 scene() {  # name, then quaternia render arguments; isa=avx2 scene ... caps the lanes (--isa)
   local name=$1; shift
+  if [ -n "${rows:-}" ] && ! [[ $name =~ $rows ]]; then return; fi
   # The summaries go to a file and are read after the runs: a reader started beside them (a
   # pipe into python3) would take the other core while the first render runs.
   : > "$out/runs.jsonl"
@@ -67,6 +70,27 @@ scene default-preview-360p --width 640 --height 360 "${one_spp[@]}"
 scene default-720p-4spp
 scene case01-shaded-1080p bench/scenes/case01_sqr_A_shaded.toml
 isa=avx2 scene case01-shaded-1080p-avx2 bench/scenes/case01_sqr_A_shaded.toml
+# Other algebras (issue 16), the default scene otherwise, side by side with z^2 + c above:
+# bicomplex z^2 + c (the two duplex components in the lanes), octonion z^2 + c with c outside the
+# quaternion half on the default slice (an isometry into H) and on a slice whose directions
+# orthogonal to 1 and Im c span four dimensions (the fold's length in the lanes), each on the
+# best ISA and on AVX2; then the fixed-step algebras (scalar reference) at 640x360.
+octonion=(--set 'fractal.algebra="octonion"' --set 'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0.1, 0, 0.05, 0]')
+folded=("${octonion[@]}" --set 'slice.axes=[[1,0,0,0,0,0,0,0],[0,1,0,0.2,0,0,0,0],[0,0,0,0,0,0,1,0.3]]')
+for target in best avx2; do
+  isa=$target scene "algebra-quaternion-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}"
+  isa=$target scene "algebra-bicomplex-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
+    --set 'fractal.algebra="bicomplex"'
+  isa=$target scene "algebra-octonion-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
+    "${octonion[@]}"
+  isa=$target scene "algebra-octonion-folded-1080p-$target" --width 1920 --height 1080 \
+    "${one_spp[@]}" "${folded[@]}"
+done
+scene algebra-coquaternion-360p --width 640 --height 360 "${one_spp[@]}" \
+  --set 'fractal.algebra="coquaternion"'
+scene algebra-biquaternion-360p --width 640 --height 360 "${one_spp[@]}" \
+  --set 'fractal.algebra="biquaternion"' --set 'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0]'
+[ -n "${rows:-}" ] && exit 0
 # Films (`quaternia animate`): the hidden-turn preset at 1 sample on 2 threads, frames per second
 # end to end (every PNG written, the process start left out) and of the render loop alone (the
 # sum of the frames' render seconds); the ratio is how much of the render speed the film keeps
