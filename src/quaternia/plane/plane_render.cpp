@@ -10,6 +10,7 @@
 #include "quaternia/dynamics/basins.h"
 #include "quaternia/dynamics/mandelbrot.h"
 #include "quaternia/fractal/distance.h"
+#include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/image/png_writer.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/parameters.h"
@@ -81,25 +82,81 @@ PlaneImage renderSamples(const PlaneView& view, int samples, const PlaneRenderOp
     return result;
 }
 
-// Julia-set kinds: each plane point is a quaternion (`toQuaternion`), iterated by JuliaSet, the
-// one iteration of the library, so that a complex image and the same plane sliced out of H go
-// through the very same arithmetic. `scale` is the length in H of one plane unit.
-template <typename ToQuaternion>
-PlaneImage renderJulia(const Scene& scene, const PlaneView& view, double scale,
-                       const PlaneRenderOptions& options, const ToQuaternion& toQuaternion) {
-    const JuliaSet set = juliaSetOfScene(scene);
+// Julia-set kinds: each plane point z goes through `estimateAt(z)` (a DistanceEstimate of the
+// set at the point the plane point stands for). `scale` is the length in the algebra of one
+// plane unit.
+template <typename EstimateAt>
+PlaneImage renderEscape(const Scene& scene, const PlaneView& view, double scale,
+                        const PlaneRenderOptions& options, const EstimateAt& estimateAt) {
     const double pixelSize = view.pixelSize() * scale;
     if (scene.plane.kind == PlaneKind::JuliaBoundary) {
         const double lineWidth = scene.plane.boundaryWidth * pixelSize;
         return renderSamples(view, scene.render.samples, options, [&](std::complex<double> z) {
-            DistanceEstimate e = set.estimate(toQuaternion(z));
+            DistanceEstimate e = estimateAt(z);
             return !e.inside && e.distance < lineWidth ? boundaryColor() : interiorColor();
         });
     }
     return renderSamples(view, scene.render.samples, options, [&](std::complex<double> z) {
-        DistanceEstimate e = set.estimate(toQuaternion(z));
+        DistanceEstimate e = estimateAt(z);
         return escapeShade(e.inside, e.smoothIteration, e.distance, pixelSize);
     });
+}
+
+// The quaternion kinds: each plane point is a quaternion (`toQuaternion`), iterated by
+// JuliaSet, the one iteration of the library, so that a complex image and the same plane
+// sliced out of H go through the very same arithmetic.
+template <typename ToQuaternion>
+PlaneImage renderJulia(const Scene& scene, const PlaneView& view, double scale,
+                       const PlaneRenderOptions& options, const ToQuaternion& toQuaternion) {
+    const JuliaSet set = juliaSetOfScene(scene);
+    return renderEscape(scene, view, scale, options,
+                        [&](std::complex<double> z) { return set.estimate(toQuaternion(z)); });
+}
+
+// The set of a scene in another algebra, iterated plane.max_iterations times (the renderer's
+// HypercomplexJuliaSet with the plane's iteration count).
+std::shared_ptr<const HypercomplexFractal> hypercomplexSetOfScene(const Scene& scene) {
+    Scene planeScene = scene;
+    planeScene.fractal.maxIterations = scene.plane.maxIterations;
+    return hypercomplexFractalFromScene(planeScene);
+}
+
+// The slice kind in another algebra: plane.origin + x plane.u + y plane.v is the algebra's
+// point (components 1, i, j, k) for the 4-component algebras, as for the quaternions; for the
+// 8-component ones its first three components are a point of the 3D slice (slice.origin,
+// slice.axes), which maps it into the algebra. Membership is HypercomplexJuliaSet::contains,
+// K_N exactly as the renderer and the mesher take it; the estimate only colours escaping points.
+PlaneImage renderHypercomplexSlice(const Scene& scene, const PlaneView& view,
+                                   const PlaneRenderOptions& options) {
+    const auto fractal = hypercomplexSetOfScene(scene);
+    const HypercomplexJuliaSet& set = fractal->set;
+    const PlaneSettings& plane = scene.plane;
+    const bool throughSlice = algebraDimension(scene.fractal.algebra) == 8;
+    const double scale = std::sqrt(norm(plane.u) * norm(plane.v));
+    return renderEscape(scene, view, scale, options, [&](std::complex<double> z) {
+        const Quaternion q = plane.origin + plane.u * z.real() + plane.v * z.imag();
+        const Hypercomplex point = throughSlice ? fractal->slice.fromWorld(Point3d(q.w, q.x, q.y))
+                                                : Hypercomplex{q.w, q.x, q.y, q.z, 0, 0, 0, 0};
+        if (set.contains(point)) {
+            DistanceEstimate inside;
+            inside.inside = true;
+            return inside;
+        }
+        DistanceEstimate e = set.estimate(point);
+        e.inside = false;
+        return e;
+    });
+}
+
+// The complex kinds draw the formula's restriction to a complex plane, which is taken in the
+// quaternions only: in the other algebras they are refused (the slice kind draws every algebra).
+void requireQuaternionsFor(const Scene& scene) {
+    if (scene.fractal.algebra == Algebra::kQuaternion) return;
+    throw UserError("plane.kind", "plane.kind = \"" + kindName(scene) +
+                                      "\" draws a complex restriction of the formula, taken in the "
+                                      "quaternions only; with fractal.algebra = \"" +
+                                      std::string(algebraName(scene.fractal.algebra)) +
+                                      "\" use plane.kind = \"slice\", a plane through the set");
 }
 
 }  // namespace
@@ -154,8 +211,13 @@ ComplexRestriction complexRestrictionOfScene(const Scene& scene) {
 
 void validatePlaneScene(const Scene& scene) {
     validateScene(scene);
-    juliaSetOfScene(scene);  // the formula compiles, the bailout is usable
     const PlaneSettings& plane = scene.plane;
+    if (scene.fractal.algebra == Algebra::kQuaternion) {
+        juliaSetOfScene(scene);  // the formula compiles, the bailout is usable
+    } else {
+        if (plane.kind != PlaneKind::Slice) requireQuaternionsFor(scene);
+        hypercomplexSetOfScene(scene);  // formula, bailout and slice keys
+    }
     switch (plane.kind) {
         case PlaneKind::Julia:
         case PlaneKind::JuliaBoundary:
@@ -176,6 +238,19 @@ void validatePlaneScene(const Scene& scene) {
                 throw UserError("plane.v",
                                 "plane.v is parallel to plane.u; a slice needs two "
                                 "independent directions of H");
+            if (algebraDimension(scene.fractal.algebra) == 8) {
+                // The plane lies in the 3D slice: its points have three coordinates.
+                for (const auto& [key, q] :
+                     {std::pair<const char*, const Quaternion&>{"plane.origin", plane.origin},
+                      {"plane.u", plane.u},
+                      {"plane.v", plane.v}})
+                    if (q.z != 0)
+                        throw UserError(key, std::string(key) + ": with fractal.algebra = \"" +
+                                                 std::string(algebraName(scene.fractal.algebra)) +
+                                                 "\" the plane lies in the 3D slice "
+                                                 "(slice.origin, slice.axes), so its fourth "
+                                                 "component must be 0");
+            }
             break;
         }
     }
@@ -193,6 +268,8 @@ PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
                                [&](std::complex<double> z) { return restriction.toQuaternion(z); });
         }
         case PlaneKind::Slice: {
+            if (scene.fractal.algebra != Algebra::kQuaternion)
+                return renderHypercomplexSlice(scene, view, options);
             const double scale = std::sqrt(norm(plane.u) * norm(plane.v));
             return renderJulia(scene, view, scale, options, [&](std::complex<double> z) {
                 return plane.origin + plane.u * z.real() + plane.v * z.imag();

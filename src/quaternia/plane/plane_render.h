@@ -1,6 +1,7 @@
 // 2D images of complex and quaternion dynamics (`quaternia plane`): the filled Julia set K_c
 // with smooth escape colouring, the Julia set J_c drawn thin by its distance estimate, the
-// Mandelbrot set of z^d + c, basins of attraction (basins.h), and any plane through H. One view
+// Mandelbrot set of z^d + c, basins of attraction (basins.h), and any plane through H or,
+// in the other algebras of fractal.algebra, through the set there (the slice kind). One view
 // (PlaneView: centre, width, rotation, image size) for every kind; stratified samples per pixel
 // as the 3D renderer takes them (samplePosition), tiles spread by the one parallel-for.
 #pragma once
@@ -36,7 +37,10 @@ ComplexRestriction complexRestrictionOfScene(const Scene& scene);
 
 // validateScene, then what the chosen plane.kind needs: a complex restriction (julia kinds,
 // basins), a formula z^d + c (mandelbrot), plane.u and plane.v neither zero nor parallel
-// (slice), and a compilable formula. Throws UserError naming the key to change.
+// (slice), and a compilable formula. In the algebras other than the quaternions only the slice
+// kind is taken (plane.kind is named otherwise); for the 8-component ones the plane lies in the
+// 3D slice of slice.origin and slice.axes, so plane.origin, plane.u and plane.v must have a
+// zero fourth component. Throws UserError naming the key to change.
 void validatePlaneScene(const Scene& scene);
 
 // An upper bound of the memory renderPlane and encodePng of its image take beyond a small fixed
