@@ -33,8 +33,8 @@ void requireQuaternionAlgebra(const Scene& scene, const std::string& command) {
     throw UserError("fractal.algebra",
                     "fractal.algebra = \"" + std::string(algebraName(scene.fractal.algebra)) +
                         "\": `quaternia " + command +
-                        "` works in the quaternions only so far; render and mesh take every "
-                        "algebra");
+                        "` works in the quaternions only so far; render, mesh, orbit and "
+                        "plane (plane.kind = \"slice\") take every algebra");
 }
 
 Polynomial compileMap(const std::string& formula, const Quaternion& c, const std::string& name) {
