@@ -148,15 +148,36 @@ PlaneImage renderHypercomplexSlice(const Scene& scene, const PlaneView& view,
     });
 }
 
-// The complex kinds draw the formula's restriction to a complex plane, which is taken in the
-// quaternions only: in the other algebras they are refused (the slice kind draws every algebra).
-void requireQuaternionsFor(const Scene& scene) {
-    if (scene.fractal.algebra == Algebra::kQuaternion) return;
-    throw UserError("plane.kind", "plane.kind = \"" + kindName(scene) +
-                                      "\" draws a complex restriction of the formula, taken in the "
-                                      "quaternions only; with fractal.algebra = \"" +
-                                      std::string(algebraName(scene.fractal.algebra)) +
-                                      "\" use plane.kind = \"slice\", a plane through the set");
+// The complex kinds in another algebra: where the formula maps a copy span{1, u} of C into
+// itself with every constant in it (HypercomplexFormula::complexAxis), it acts there as the
+// same formula on span{1, u} in H, so the quaternion scene with c's components 0 .. 3 has the
+// same complex restriction, and that scene is drawn. The Mandelbrot set of z^d + c is checked
+// with c = 0.5 + 0.25 i: every other constant must then lie in span{1, i}, where the formula is
+// z^d + c for each complex c as the quaternion check finds. Refused, naming plane.kind and the
+// algebra, where there is no such plane. The quaternions' scene is returned as it is.
+Scene complexKindScene(const Scene& scene) {
+    if (scene.fractal.algebra == Algebra::kQuaternion) return scene;
+    const bool mandelbrot = scene.plane.kind == PlaneKind::Mandelbrot;
+    Scene probe = scene;
+    if (mandelbrot) {
+        probe.fractal.c = Quaternion(0.5, 0.25, 0, 0);
+        probe.fractal.cUpper = {};
+    }
+    const auto axis = hypercomplexSetOfScene(probe)->set.formula().complexAxis();
+    if (!axis || (mandelbrot && !inPlane(kUnitI, *axis)))
+        throw UserError("plane.kind",
+                        "plane.kind = \"" + kindName(scene) +
+                            "\" needs a plane span{1, u} (u^2 = -1) holding every constant of "
+                            "fractal.formula and fractal.c, and fractal.algebra = \"" +
+                            std::string(algebraName(scene.fractal.algebra)) +
+                            "\" has none for them; plane.kind = \"slice\" draws any formula");
+    Scene quaternion = scene;
+    quaternion.fractal.algebra = Algebra::kQuaternion;
+    quaternion.fractal.cUpper = {};
+    quaternion.fractal.cComponents = 4;
+    quaternion.slice.origin.clear();
+    quaternion.slice.axes.clear();
+    return quaternion;
 }
 
 }  // namespace
@@ -189,6 +210,8 @@ PlaneView planeViewFromScene(const Scene& scene) {
 }
 
 ComplexRestriction complexRestrictionOfScene(const Scene& scene) {
+    if (scene.fractal.algebra != Algebra::kQuaternion)
+        return complexRestrictionOfScene(complexKindScene(scene));
     auto restriction =
         restrictToComplexPlane(compileFormula(scene.fractal.formula, scene.fractal.c));
     if (!restriction)
@@ -212,11 +235,14 @@ ComplexRestriction complexRestrictionOfScene(const Scene& scene) {
 void validatePlaneScene(const Scene& scene) {
     validateScene(scene);
     const PlaneSettings& plane = scene.plane;
-    if (scene.fractal.algebra == Algebra::kQuaternion) {
-        juliaSetOfScene(scene);  // the formula compiles, the bailout is usable
-    } else {
-        if (plane.kind != PlaneKind::Slice) requireQuaternionsFor(scene);
+    if (scene.fractal.algebra != Algebra::kQuaternion) {
         hypercomplexSetOfScene(scene);  // formula, bailout and slice keys
+        if (plane.kind != PlaneKind::Slice) {
+            validatePlaneScene(complexKindScene(scene));
+            return;
+        }
+    } else {
+        juliaSetOfScene(scene);  // the formula compiles, the bailout is usable
     }
     switch (plane.kind) {
         case PlaneKind::Julia:
@@ -258,6 +284,8 @@ void validatePlaneScene(const Scene& scene) {
 
 PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
     validatePlaneScene(scene);
+    if (scene.fractal.algebra != Algebra::kQuaternion && scene.plane.kind != PlaneKind::Slice)
+        return renderPlane(complexKindScene(scene), options);
     const PlaneView view = planeViewFromScene(scene);
     const PlaneSettings& plane = scene.plane;
     switch (plane.kind) {

@@ -276,20 +276,41 @@ TEST(PlaneRender, EightComponentSlicePlaneFollowsSliceAxes) {
     EXPECT_GT(std::count(mask.begin(), mask.end(), true), 48 * 32 / 20);
 }
 
-TEST(PlaneRender, OtherAlgebrasTakeTheSliceKindOnly) {
-    Scene scene = planeScene("julia", {-0.4, 0.6, 0, 0}, 16, 12, 1);
-    setParameter(scene, "fractal.algebra", std::string("bicomplex"));
-    UserError error = thrownError([&] { validatePlaneScene(scene); });
+TEST(PlaneRender, ComplexKindsInOtherAlgebrasNeedACopyOfCHoldingEveryConstant) {
+    // Bicomplex numbers: i^2 = j^2 = -1, k^2 = +1. With c in span{1, i} the julia kinds draw the
+    // quaternion picture of the same complex polynomial; with c = 0.3 + 0.5 j too (span{1, j}).
+    Scene quaternion = planeScene("julia", kRabbit, 32, 24, 1);
+    Scene bicomplex = quaternion;
+    setParameter(bicomplex, "fractal.algebra", std::string("bicomplex"));
+    EXPECT_EQ(renderPlane(quaternion).image.pixels(), renderPlane(bicomplex).image.pixels());
+    setParameter(bicomplex, "fractal.c", std::vector<double>{-0.3, 0, 0.5, 0});
+    EXPECT_NO_THROW(validatePlaneScene(bicomplex));
+    // k*k is +1 here but -1 in H: the constants k lie in no copy of C, so no restriction.
+    setParameter(bicomplex, "fractal.formula", std::string("k*k*z^2 + c"));
+    UserError error = thrownError([&] { validatePlaneScene(bicomplex); });
     EXPECT_EQ(error.key(), "plane.kind");
     EXPECT_NE(std::string(error.what()).find("bicomplex"), std::string::npos) << error.what();
-    setParameter(scene, "plane.kind", std::string("slice"));
-    EXPECT_NO_THROW(validatePlaneScene(scene));
-    // 8 components: the plane's points are points of the 3D slice (fourth component 0).
-    setParameter(scene, "fractal.algebra", std::string("octonion"));
-    setParameter(scene, "fractal.c", std::vector<double>{-0.4, 0.6, 0, 0, 0, 0, 0, 0});
-    EXPECT_NO_THROW(validatePlaneScene(scene));
-    setParameter(scene, "plane.v", std::vector<double>{0, 0, 0, 1});
-    EXPECT_EQ(thrownError([&] { validatePlaneScene(scene); }).key(), "plane.v");
+    setParameter(bicomplex, "plane.kind", std::string("mandelbrot"));
+    EXPECT_EQ(thrownError([&] { validatePlaneScene(bicomplex); }).key(), "plane.kind");
+    setParameter(bicomplex, "fractal.formula", std::string("z^2 + c"));
+    setParameter(quaternion, "plane.kind", std::string("mandelbrot"));
+    EXPECT_EQ(renderPlane(quaternion).image.pixels(), renderPlane(bicomplex).image.pixels());
+    // Coquaternions: j^2 = +1, so c = 0.3 + 0.5 j has no restriction; the slice kind draws it.
+    Scene coquaternion = planeScene("basins", {-0.3, 0, 0.5, 0}, 16, 12, 1);
+    setParameter(coquaternion, "fractal.algebra", std::string("coquaternion"));
+    EXPECT_EQ(thrownError([&] { validatePlaneScene(coquaternion); }).key(), "plane.kind");
+    setParameter(coquaternion, "plane.kind", std::string("slice"));
+    EXPECT_NO_THROW(validatePlaneScene(coquaternion));
+    // Octonions: c must lie in the quaternion half; the 8-component plane lies in the 3D slice.
+    Scene octonion = planeScene("julia-boundary", {-0.4, 0.6, 0, 0, 0, 0, 0, 0.1}, 16, 12, 1);
+    setParameter(octonion, "fractal.algebra", std::string("octonion"));
+    EXPECT_EQ(thrownError([&] { validatePlaneScene(octonion); }).key(), "plane.kind");
+    setParameter(octonion, "fractal.c", std::vector<double>{-0.4, 0.6, 0, 0, 0, 0, 0, 0});
+    EXPECT_NO_THROW(validatePlaneScene(octonion));
+    setParameter(octonion, "plane.kind", std::string("slice"));
+    EXPECT_NO_THROW(validatePlaneScene(octonion));
+    setParameter(octonion, "plane.v", std::vector<double>{0, 0, 0, 1});
+    EXPECT_EQ(thrownError([&] { validatePlaneScene(octonion); }).key(), "plane.v");
 }
 
 }  // namespace
