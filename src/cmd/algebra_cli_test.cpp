@@ -93,6 +93,10 @@ TEST_F(AlgebraCli, OrbitInEveryAlgebra) {
     EXPECT_NE(r.out.find("in bicomplex (4x4): Jacobian eigenvalues 0, 0, 0, 0, superattracting"),
               std::string::npos)
         << r.out;
+    // span{1, i} is a copy of C holding c: the complex multiplier and K's connectedness.
+    EXPECT_NE(r.out.find("multiplier: 0 (|lambda| = 0), superattracting"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("K: connected"), std::string::npos) << r.out;
     // Octonions: an 8x8 Jacobian, 8 eigenvalues and 8 components per point in the JSON.
     r =
         run("orbit --set 'fractal.algebra=\"octonion\"' --set 'fractal.c=[-1, 0, 0, 0, 0, 0, 0, "

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "cmd/dynamics_input.h"
+#include "quaternia/algebra/formula.h"
 #include "quaternia/dynamics/connectedness.h"
 #include "quaternia/dynamics/orbit.h"
 #include "quaternia/fractal/hypercomplex_julia.h"
@@ -205,14 +206,21 @@ int runHypercomplexOrbit(const OrbitCommandOptions& options, const Scene& scene)
     orbitOptions.maxIterations = scene.orbit.maxIterations;
     const Quaternion& z = scene.orbit.z0;
     const Hypercomplex z0{z.w, z.x, z.y, z.z, 0, 0, 0, 0};
+    // Where the formula restricts to a copy of C, it is there the complex polynomial it is in
+    // H (HypercomplexFormula::complexAxis): K's connectedness is that polynomial's.
+    std::optional<Connectedness> k;
+    if (set.formula().complexAxis()) {
+        const auto restriction =
+            restrictToComplexPlane(compileFormula(scene.fractal.formula, scene.fractal.c));
+        if (restriction) k = connectedness(restriction->polynomial, scene.orbit.maxIterations);
+    }
     if (set.formula().dimension() == 4)
         return report(
             options, scene,
-            analyzeHypercomplexOrbit<4>(set.formula(), set.escapeRadius(), z0, orbitOptions),
-            std::nullopt);
+            analyzeHypercomplexOrbit<4>(set.formula(), set.escapeRadius(), z0, orbitOptions), k);
     return report(options, scene,
                   analyzeHypercomplexOrbit<8>(set.formula(), set.escapeRadius(), z0, orbitOptions),
-                  std::nullopt);
+                  k);
 }
 
 Scene orbitScene(const OrbitCommandOptions& options) {

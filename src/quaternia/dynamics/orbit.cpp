@@ -8,8 +8,8 @@ namespace quaternia {
 namespace {
 
 // The maps the orbit analysis runs on: a point type with operator[] on its N coordinates,
-// evaluation and the N x N Jacobian. The quaternion polynomial also knows its complex planes
-// (the multiplier of a cycle in C_u); the other algebras have none.
+// evaluation and the N x N Jacobian, and the complex plane C_u where the map restricts to a
+// complex polynomial (the multiplier of a cycle there).
 struct QuaternionMap {
     using Point = Quaternion;
     using Cycle = CycleAnalysis;
@@ -25,18 +25,39 @@ struct QuaternionMap {
     }
 };
 
+// In another algebra the complex plane is the copy span{1, u} of C that the formula maps into
+// itself (HypercomplexFormula::complexAxis), where p is complex-analytic: its derivative along
+// 1 is p'(z), read in the coordinates x + y u.
 template <std::size_t Dimension>
 struct HypercomplexMap {
     using Point = Hypercomplex;
     using Cycle = HypercomplexCycleAnalysis<Dimension>;
     static constexpr std::size_t N = Dimension;
     const HypercomplexFormula& formula;
+    std::optional<Quaternion> axis = formula.complexAxis();
     Point operator()(const Point& z) const { return formula.evaluate(z); }
     Matrix<N> jacobianAt(const Point& z) const { return hypercomplexJacobian<N>(formula, z); }
     static double size(const Point& z) { return euclideanNorm(z); }
     static bool finite(const Point& z) { return std::isfinite(normSquared(z)); }
-    void addMultiplier(Cycle&) const {}
-    static bool inPlane(const Point&, const Quaternion&) { return false; }
+    static Quaternion quaternionPart(const Point& z) { return Quaternion(z[0], z[1], z[2], z[3]); }
+    static bool inPlane(const Point& z, const Quaternion& u) {
+        return std::all_of(z.begin() + 4, z.end(), [](double v) { return v == 0; }) &&
+               quaternia::inPlane(quaternionPart(z), u);
+    }
+    void addMultiplier(Cycle& cycle) const {
+        if (!axis || !std::all_of(cycle.points.begin(), cycle.points.end(),
+                                  [&](const Point& w) { return inPlane(w, *axis); }))
+            return;
+        Complex lambda = 1;
+        for (const Point& w : cycle.points) {
+            const Quaternion slope =
+                quaternionPart(formula.evaluateWithDerivative(w, realElement(1)).second);
+            lambda *= Complex(slope.w, dot(slope, *axis));
+        }
+        cycle.multiplier = lambda;
+        cycle.axis = *axis;
+        cycle.complexClass = classifyMultiplier(lambda);
+    }
 };
 
 template <typename Map>

@@ -25,7 +25,9 @@
 // The same analysis runs in the other algebras of hypercomplex.h (analyzeHypercomplexOrbit):
 // the map is the HypercomplexFormula, the Jacobian of f^n is N x N with N the algebra's
 // dimension (4 or 8), built from its directional derivatives along the basis, and the class is
-// that of its eigenvalues; there is no complex multiplier. Escape is |z| > the set's escape
+// that of its eigenvalues; the complex multiplier is that of the copy span{1, u} of C the
+// formula maps into itself (HypercomplexFormula::complexAxis), for cycles in it, where p is
+// complex-analytic and its derivative along 1 is p'(z). Escape is |z| > the set's escape
 // radius (HypercomplexJuliaSet::escapeRadius): certain for octonions and bicomplex numbers,
 // K_N's test for coquaternions and biquaternions, whose null elements leave no radius certain.
 #pragma once
@@ -57,7 +59,7 @@ struct BasicCycleAnalysis {
     Matrix<N> jacobian{};  // of f^n at points[0]
     std::array<std::complex<double>, N> eigenvalues{};
     Classification classInH;  // the class from the eigenvalues, in H or the algebra
-    // H only: when the coefficients and the cycle lie in one plane C_u: the complex multiplier
+    // When the coefficients and the cycle lie in one plane C_u: the complex multiplier
     // lambda = prod p'(z_k) of the restriction, in the coordinates x + y u, and its class.
     std::optional<std::complex<double>> multiplier;
     Quaternion axis = kUnitI;  // u

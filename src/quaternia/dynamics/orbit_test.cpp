@@ -215,7 +215,8 @@ TEST(HypercomplexOrbit, OctonionOrbitInTheQuaternionHalfIsTheQuaternionOrbit) {
     EXPECT_EQ(o.preperiod, h.preperiod);
     ASSERT_TRUE(o.cycle && h.cycle);
     ASSERT_EQ(o.cycle->period(), 3);
-    EXPECT_FALSE(o.cycle->multiplier);
+    ASSERT_TRUE(o.cycle->multiplier && h.cycle->multiplier);  // the cycle lies in C_i
+    EXPECT_EQ(*o.cycle->multiplier, *h.cycle->multiplier);
     double product = 1;
     for (int k = 0; k < 3; ++k) {
         const Hypercomplex& w = o.cycle->points[size_t(k)];
@@ -295,6 +296,35 @@ TEST(HypercomplexOrbit, CoquaternionOrbitInTheComplexPlaneIsTheComplexOne) {
             expectNearComplex(q.cycle->eigenvalues[k], h.cycle->eigenvalues[k], 1e-12);
         EXPECT_EQ(q.cycle->classInH.stability, Stability::Superattracting);
     }
+}
+
+TEST(HypercomplexOrbit, BicomplexFixedPointInSpanOneJHasTheComplexMultiplier) {
+    // j^2 = -1: span{1, j} is a copy of C, so with c = -0.5 + 0.3 j the fixed point
+    // w* = (1 - sqrt(1 - 4c)) / 2 (read as x + y j) has the multiplier 2 w*. In duplex form
+    // x + y j is (x + y i, x - y i), a fixed point of w^2 + c_1 and of its conjugate map, so
+    // the 4x4 Jacobian has 2 w* and its conjugate twice each.
+    const Complex c(-0.5, 0.3), fixed = (1.0 - std::sqrt(1.0 - 4.0 * c)) / 2.0;
+    const auto r = hypercomplexOrbitOf<4>(Algebra::kBicomplex, {c.real(), 0, c.imag(), 0},
+                                          {fixed.real(), 0, fixed.imag(), 0});
+    EXPECT_EQ(r.fate, OrbitFate::Periodic);
+    ASSERT_TRUE(r.cycle && r.cycle->multiplier);
+    EXPECT_EQ(r.cycle->period(), 1);
+    EXPECT_EQ(r.cycle->axis, Quaternion(0, 0, 1, 0));
+    expectNearComplex(*r.cycle->multiplier, 2.0 * fixed, 1e-12);
+    EXPECT_EQ(r.governingClass.stability, Stability::Attracting);  // |2 w*| = 0.83
+    const auto& e = r.cycle->eigenvalues;
+    const Complex upper(2 * fixed.real(), std::abs(2 * fixed.imag()));
+    expectNearComplex(e[0], upper, 1e-12);
+    expectNearComplex(e[1], upper, 1e-12);
+    expectNearComplex(e[2], std::conj(upper), 1e-12);
+    expectNearComplex(e[3], std::conj(upper), 1e-12);
+    // An orbit from off the plane converges to the same cycle; its class is the Jacobian's.
+    const auto off =
+        hypercomplexOrbitOf<4>(Algebra::kBicomplex, {c.real(), 0, c.imag(), 0}, {0.01, 0.02, 0, 0});
+    ASSERT_TRUE(off.cycle);
+    EXPECT_EQ(off.fate, OrbitFate::Attracted);
+    EXPECT_EQ(off.cycle->period(), 1);
+    EXPECT_EQ(off.governingClass.stability, off.cycle->classInH.stability);
 }
 
 TEST(HypercomplexOrbit, DimensionMustBeTheAlgebras) {
