@@ -40,12 +40,6 @@ Json pointJson(const Scene& scene, const Hypercomplex& q) {
     return std::vector<double>(q.begin(), q.begin() + algebraDimension(scene.fractal.algebra));
 }
 
-Hypercomplex cOfScene(const Scene& scene) {
-    const Quaternion& c = scene.fractal.c;
-    const std::array<double, 4>& upper = scene.fractal.cUpper;
-    return {c.w, c.x, c.y, c.z, upper[0], upper[1], upper[2], upper[3]};
-}
-
 // "H" for the quaternions, else the algebra's name and the Jacobian's size.
 std::string algebraLabel(const Scene& scene) {
     if (scene.fractal.algebra == Algebra::kQuaternion) return "H";
@@ -90,15 +84,13 @@ std::string connectednessText(const Connectedness& k) {
 
 template <typename Result>
 void printText(const Scene& scene, const Result& r, const std::optional<Connectedness>& k) {
-    const bool quaternion = scene.fractal.algebra == Algebra::kQuaternion;
-    std::printf(
-        "orbit of z0 = %s under %s%s, c = %s\n", formatQuaternion(scene.orbit.z0).c_str(),
-        scene.fractal.formula.c_str(),
-        quaternion
+    const std::string algebra =
+        scene.fractal.algebra == Algebra::kQuaternion
             ? ""
-            : (" in the " + std::string(algebraName(scene.fractal.algebra)) + " algebra").c_str(),
-        quaternion ? formatQuaternion(scene.fractal.c).c_str()
-                   : pointText(scene, cOfScene(scene)).c_str());
+            : " in the " + std::string(algebraName(scene.fractal.algebra)) + " algebra";
+    std::printf("orbit of z0 = %s under %s%s, c = %s\n", formatQuaternion(scene.orbit.z0).c_str(),
+                scene.fractal.formula.c_str(), algebra.c_str(),
+                pointText(scene, cOfScene(scene)).c_str());
     std::printf("fate: %s\n", fateText(r).c_str());
     if (r.cycle) {
         const auto& cycle = *r.cycle;
@@ -175,7 +167,7 @@ void printJson(const Scene& scene, const Result& r, const std::optional<Connecte
     if (scene.fractal.algebra != Algebra::kQuaternion)
         json["algebra"] = std::string(algebraName(scene.fractal.algebra));
     json["formula"] = scene.fractal.formula;
-    json["c"] = pointJson(scene, cOfScene(scene));
+    json["c"] = cComponents(scene);
     json["z0"] = scene.orbit.z0;
     json["max_iterations"] = scene.orbit.maxIterations;
     addOrbit(json, r);

@@ -52,17 +52,9 @@ void printSummary(const PlaneCommandOptions& options, const Scene& scene, const 
     json["height"] = scene.render.height;
     json["samples"] = scene.render.samples;
     json["formula"] = scene.fractal.formula;
-    if (scene.fractal.algebra == Algebra::kQuaternion) {
-        json["c"] = scene.fractal.c;
-    } else {
+    if (scene.fractal.algebra != Algebra::kQuaternion)
         json["algebra"] = std::string(algebraName(scene.fractal.algebra));
-        const Quaternion& c = scene.fractal.c;
-        std::vector<double> components{c.w, c.x, c.y, c.z};
-        if (algebraDimension(scene.fractal.algebra) == 8)
-            components.insert(components.end(), scene.fractal.cUpper.begin(),
-                              scene.fractal.cUpper.end());
-        json["c"] = components;
-    }
+    json["c"] = cComponents(scene);
     json["threads"] = image.threads;
     json["seconds"] = image.seconds;
     json["note"] = note.empty() ? Json() : Json(note);
