@@ -56,10 +56,68 @@ TEST_F(AlgebraCli, BadAlgebraInputIsOneLineAndNoFile) {
                     "fractal.bailout");
     // Functions are the bicomplex numbers' only.
     expectUserError(run(render("--set 'fractal.formula=\"sin(z) + c\"'")), "fractal.formula");
-    // The dynamics commands work in the quaternions only, and say so.
-    expectUserError(run("orbit --set 'fractal.algebra=\"bicomplex\"'"), "fractal.algebra");
-    expectUserError(run("plane -o " + output() + " --set 'fractal.algebra=\"bicomplex\"'"),
-                    "fractal.algebra");
+    // `cycles` and the complex plane kinds work in the quaternions only, and say so.
+    expectUserError(run("cycles --set 'fractal.algebra=\"bicomplex\"'"), "fractal.algebra");
+    r = run("plane -o " + output() + " --set 'fractal.algebra=\"bicomplex\"'");
+    expectUserError(r, "plane.kind");
+    EXPECT_NE(r.err.find("bicomplex"), std::string::npos) << r.err;
+    // An 8-component algebra's plane lies in the 3D slice: three coordinates.
+    expectUserError(run("plane -o " + output() +
+                        " --set plane.kind=slice --set 'fractal.algebra=\"octonion\"' --set "
+                        "'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0]' --set "
+                        "'plane.origin=[0, 0, 0, 0.5]'"),
+                    "plane.origin");
+}
+
+TEST_F(AlgebraCli, PlaneSlicesEveryAlgebra) {
+    for (const char* settings :
+         {"--set 'fractal.algebra=\"bicomplex\"'", "--set 'fractal.algebra=\"coquaternion\"'",
+          "--set 'fractal.algebra=\"octonion\"' --set 'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0.1, 0, 0, "
+          "0]' --set 'slice.axes=[[1, 0, 0, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0, 0, 0], [0, 0, 0, "
+          "0, 1, 0, 0, 0]]'",
+          "--set 'fractal.algebra=\"biquaternion\"' --set 'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0, 0, "
+          "0, 0]'"}) {
+        CommandResult r = run("plane -o " + output() + kTiny + " --set plane.kind=slice " +
+                              settings + " --set plane.max_iterations=64 --json");
+        EXPECT_EQ(r.exitCode, 0) << settings << ": " << r.err;
+        EXPECT_TRUE(fs::exists(output())) << settings;
+        fs::remove(output());
+    }
+}
+
+TEST_F(AlgebraCli, OrbitInEveryAlgebra) {
+    // Bicomplex c = -1 is (-1, -1) in duplex form: 0 -> -1 -> 0 in both components.
+    CommandResult r = run("orbit --set 'fractal.algebra=\"bicomplex\"' --c -1");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("periodic with period 2"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("in bicomplex (4x4): Jacobian eigenvalues 0, 0, 0, 0, superattracting"),
+              std::string::npos)
+        << r.out;
+    // span{1, i} is a copy of C holding c: the complex multiplier and K's connectedness.
+    EXPECT_NE(r.out.find("multiplier: 0 (|lambda| = 0), superattracting"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("K: connected"), std::string::npos) << r.out;
+    // Octonions: an 8x8 Jacobian, 8 eigenvalues and 8 components per point in the JSON.
+    r =
+        run("orbit --set 'fractal.algebra=\"octonion\"' --set 'fractal.c=[-1, 0, 0, 0, 0, 0, 0, "
+            "0]' --json");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("\"algebra\":\"octonion\""), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"fate\":\"periodic\""), std::string::npos) << r.out;
+    EXPECT_NE(
+        r.out.find(
+            "\"points\":[[0.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0],[-1.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0]]"),
+        std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("\"eigenvalues\":[[0.0,0.0],[0.0,0.0],[0.0,0.0],[0.0,0.0],[0.0,0.0],[0.0,"
+                         "0.0],[0.0,0.0],[0.0,0.0]]"),
+              std::string::npos)
+        << r.out;
+    // Coquaternions and biquaternions escape past the bailout (K_N's test).
+    r = run("orbit --set 'fractal.algebra=\"coquaternion\"' --c 1");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("fate: escapes at iteration 3 (|z| > escape radius 2)"), std::string::npos)
+        << r.out;
 }
 
 TEST_F(AlgebraCli, BicomplexFunctionsRender) {

@@ -32,8 +32,13 @@ std::string formulaName(const MapFlags& flags);
 // q as the table's (1, i, j, k) vector, for setParameter.
 std::vector<double> quaternionValue(const Quaternion& q);
 
-// The dynamics commands (orbit, cycles, plane) work in the quaternions and their complex planes
-// so far: a scene in another algebra (fractal.algebra, issue 16) is refused with a UserError
+// fractal.c with all of the algebra's components (those past its dimension 0), and the same as
+// the list of its 4 or 8 components (how --json writes it).
+Hypercomplex cOfScene(const Scene& scene);
+std::vector<double> cComponents(const Scene& scene);
+
+// `quaternia cycles` works in the quaternions' complex planes only (orbit and plane take every
+// algebra): a scene in another algebra (fractal.algebra, issue 16) is refused with a UserError
 // naming fractal.algebra rather than silently read as quaternions.
 void requireQuaternionAlgebra(const Scene& scene, const std::string& command);
 

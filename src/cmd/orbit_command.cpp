@@ -3,8 +3,10 @@
 #include <cstdio>
 
 #include "cmd/dynamics_input.h"
+#include "quaternia/algebra/formula.h"
 #include "quaternia/dynamics/connectedness.h"
 #include "quaternia/dynamics/orbit.h"
+#include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/util/error.h"
 
@@ -15,7 +17,39 @@ std::string classText(const Classification& c) {
     return toString(c.stability) + (c.unsure ? " (unsure)" : "");
 }
 
-std::string fateText(const OrbitResult& r) {
+// Points and c as text and JSON: quaternions (and the 4-component algebras) as a+bi+cj+dk,
+// the 8-component algebras as their list of components, as the scene file writes them.
+std::string pointText(const Scene&, const Quaternion& q) {
+    return formatQuaternion(q);
+}
+
+std::string pointText(const Scene& scene, const Hypercomplex& q) {
+    const int dimension = algebraDimension(scene.fractal.algebra);
+    if (dimension == 4) return formatQuaternion(Quaternion(q[0], q[1], q[2], q[3]));
+    std::string text = "[";
+    for (int n = 0; n < dimension; ++n)
+        text += (n ? ", " : "") + formatReal(q[size_t(n)]);
+    return text + "]";
+}
+
+Json pointJson(const Scene&, const Quaternion& q) {
+    return q;
+}
+
+Json pointJson(const Scene& scene, const Hypercomplex& q) {
+    return std::vector<double>(q.begin(), q.begin() + algebraDimension(scene.fractal.algebra));
+}
+
+// "H" for the quaternions, else the algebra's name and the Jacobian's size.
+std::string algebraLabel(const Scene& scene) {
+    if (scene.fractal.algebra == Algebra::kQuaternion) return "H";
+    const int n = algebraDimension(scene.fractal.algebra);
+    return std::string(algebraName(scene.fractal.algebra)) + " (" + std::to_string(n) + "x" +
+           std::to_string(n) + ")";
+}
+
+template <typename Result>
+std::string fateText(const Result& r) {
     int period = r.cycle ? r.cycle->period() : 0;
     std::string cycle = std::to_string(period) + "-cycle";
     switch (r.fate) {
@@ -48,15 +82,21 @@ std::string connectednessText(const Connectedness& k) {
     return text + ")" + (k.certain ? "" : ", not certain: an orbit stayed undecided");
 }
 
-void printText(const Scene& scene, const OrbitResult& r, const std::optional<Connectedness>& k) {
-    std::printf("orbit of z0 = %s under %s, c = %s\n", formatQuaternion(scene.orbit.z0).c_str(),
-                scene.fractal.formula.c_str(), formatQuaternion(scene.fractal.c).c_str());
+template <typename Result>
+void printText(const Scene& scene, const Result& r, const std::optional<Connectedness>& k) {
+    const std::string algebra =
+        scene.fractal.algebra == Algebra::kQuaternion
+            ? ""
+            : " in the " + std::string(algebraName(scene.fractal.algebra)) + " algebra";
+    std::printf("orbit of z0 = %s under %s%s, c = %s\n", formatQuaternion(scene.orbit.z0).c_str(),
+                scene.fractal.formula.c_str(), algebra.c_str(),
+                pointText(scene, cOfScene(scene)).c_str());
     std::printf("fate: %s\n", fateText(r).c_str());
     if (r.cycle) {
-        const CycleAnalysis& cycle = *r.cycle;
+        const auto& cycle = *r.cycle;
         std::string points;
-        for (const Quaternion& w : cycle.points)
-            points += (points.empty() ? "" : " -> ") + formatQuaternion(w);
+        for (const auto& w : cycle.points)
+            points += (points.empty() ? "" : " -> ") + pointText(scene, w);
         std::printf("cycle: %s\n", points.c_str());
         if (cycle.multiplier) {
             std::printf("multiplier: %s (|lambda| = %s), %s\n",
@@ -67,17 +107,20 @@ void printText(const Scene& scene, const OrbitResult& r, const std::optional<Con
         std::string eigen;
         for (std::complex<double> e : cycle.eigenvalues)
             eigen += (eigen.empty() ? "" : ", ") + formatComplex(e);
-        std::printf("in H: Jacobian eigenvalues %s, %s\n", eigen.c_str(),
-                    classText(cycle.classInH).c_str());
+        std::printf("in %s: Jacobian eigenvalues %s, %s\n", algebraLabel(scene).c_str(),
+                    eigen.c_str(), classText(cycle.classInH).c_str());
     }
     if (r.unsure) std::printf("unsure: %s\n", r.note.empty() ? "see the class" : r.note.c_str());
     if (k) std::printf("K: %s\n", connectednessText(*k).c_str());
 }
 
-Json jsonCycle(const CycleAnalysis& cycle) {
+template <typename Cycle>
+Json jsonCycle(const Scene& scene, const Cycle& cycle) {
     Json json;
     json["period"] = cycle.period();
-    json["points"] = cycle.points;
+    json["points"] = Json::array();
+    for (const auto& w : cycle.points)
+        json["points"].push_back(pointJson(scene, w));
     json["multiplier"] = cycle.multiplier ? Json(*cycle.multiplier) : Json();
     json["plane_axis"] = cycle.multiplier ? Json(cycle.axis) : Json();
     json["class"] = cycle.multiplier ? Json(toString(cycle.complexClass.stability)) : Json();
@@ -90,7 +133,8 @@ Json jsonCycle(const CycleAnalysis& cycle) {
 }
 
 // The fields an orbit's report shares with each critical orbit's, added to `json`.
-void addOrbit(Json& json, const OrbitResult& r) {
+template <typename Result>
+void addOrbit(Json& json, const Result& r) {
     json["fate"] = toString(r.fate);
     json["escape_iteration"] = r.fate == OrbitFate::Escapes ? Json(r.escapeIteration) : Json();
     json["preperiod"] = r.preperiod;
@@ -116,20 +160,59 @@ Json jsonConnectedness(const Connectedness& k) {
     return json;
 }
 
-void printJson(const Scene& scene, const OrbitResult& r, const std::optional<Connectedness>& k) {
+template <typename Result>
+void printJson(const Scene& scene, const Result& r, const std::optional<Connectedness>& k) {
     Json json;
     json["command"] = "orbit";
+    if (scene.fractal.algebra != Algebra::kQuaternion)
+        json["algebra"] = std::string(algebraName(scene.fractal.algebra));
     json["formula"] = scene.fractal.formula;
-    json["c"] = scene.fractal.c;
+    json["c"] = cComponents(scene);
     json["z0"] = scene.orbit.z0;
     json["max_iterations"] = scene.orbit.maxIterations;
     addOrbit(json, r);
-    json["cycle"] = r.cycle ? jsonCycle(*r.cycle) : Json();
+    json["cycle"] = r.cycle ? jsonCycle(scene, *r.cycle) : Json();
     json["escape_radius"] = r.escapeRadius;
     json["tolerance"] = r.tolerance;
     json["iterations"] = r.iterations;
     json["connectedness"] = k ? jsonConnectedness(*k) : Json();
     std::printf("%s\n", jsonText(json).c_str());
+}
+
+template <typename Result>
+int report(const OrbitCommandOptions& options, const Scene& scene, const Result& result,
+           const std::optional<Connectedness>& k) {
+    if (options.json) {
+        printJson(scene, result, k);
+    } else {
+        printText(scene, result, k);
+    }
+    return 0;
+}
+
+// The orbit in another algebra (orbit.h): z0 gives components 0 .. 3, the rest are 0.
+int runHypercomplexOrbit(const OrbitCommandOptions& options, const Scene& scene) {
+    const auto fractal = hypercomplexFractalFromScene(scene);
+    const HypercomplexJuliaSet& set = fractal->set;
+    OrbitOptions orbitOptions;
+    orbitOptions.maxIterations = scene.orbit.maxIterations;
+    const Quaternion& z = scene.orbit.z0;
+    const Hypercomplex z0{z.w, z.x, z.y, z.z, 0, 0, 0, 0};
+    // Where the formula restricts to a copy of C, it is there the complex polynomial it is in
+    // H (HypercomplexFormula::complexAxis): K's connectedness is that polynomial's.
+    std::optional<Connectedness> k;
+    if (set.formula().complexAxis()) {
+        const auto restriction =
+            restrictToComplexPlane(compileFormula(scene.fractal.formula, scene.fractal.c));
+        if (restriction) k = connectedness(restriction->polynomial, scene.orbit.maxIterations);
+    }
+    if (set.formula().dimension() == 4)
+        return report(
+            options, scene,
+            analyzeHypercomplexOrbit<4>(set.formula(), set.escapeRadius(), z0, orbitOptions), k);
+    return report(options, scene,
+                  analyzeHypercomplexOrbit<8>(set.formula(), set.escapeRadius(), z0, orbitOptions),
+                  k);
 }
 
 Scene orbitScene(const OrbitCommandOptions& options) {
@@ -162,7 +245,7 @@ void addOrbitCommand(CLI::App& app, OrbitCommandOptions& options) {
 
 int runOrbitCommand(const OrbitCommandOptions& options) {
     Scene scene = orbitScene(options);
-    requireQuaternionAlgebra(scene, "orbit");
+    if (scene.fractal.algebra != Algebra::kQuaternion) return runHypercomplexOrbit(options, scene);
     Polynomial p = compileMap(scene.fractal.formula, scene.fractal.c, formulaName(options.map));
     OrbitOptions orbitOptions;
     orbitOptions.maxIterations = scene.orbit.maxIterations;
@@ -172,12 +255,7 @@ int runOrbitCommand(const OrbitCommandOptions& options) {
     if (auto restriction = restrictToComplexPlane(p)) {
         k = connectedness(restriction->polynomial, scene.orbit.maxIterations);
     }
-    if (options.json) {
-        printJson(scene, result, k);
-    } else {
-        printText(scene, result, k);
-    }
-    return 0;
+    return report(options, scene, result, k);
 }
 
 }  // namespace quaternia

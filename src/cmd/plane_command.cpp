@@ -52,7 +52,9 @@ void printSummary(const PlaneCommandOptions& options, const Scene& scene, const 
     json["height"] = scene.render.height;
     json["samples"] = scene.render.samples;
     json["formula"] = scene.fractal.formula;
-    json["c"] = scene.fractal.c;
+    if (scene.fractal.algebra != Algebra::kQuaternion)
+        json["algebra"] = std::string(algebraName(scene.fractal.algebra));
+    json["c"] = cComponents(scene);
     json["threads"] = image.threads;
     json["seconds"] = image.seconds;
     json["note"] = note.empty() ? Json() : Json(note);
@@ -65,7 +67,7 @@ void addPlaneCommand(CLI::App& app, PlaneCommandOptions& options) {
     CLI::App* plane = app.add_subcommand(
         "plane",
         "Draw a 2D image: a Julia set, its boundary, the Mandelbrot set, basins of "
-        "attraction or a plane through a quaternion Julia set (plane.kind)");
+        "attraction or a plane through a Julia set in any algebra (plane.kind)");
     addSceneOptions(*plane, options, "Output PNG (RGB: plane images are opaque)");
     plane->footer(sceneHelpFooter());
 }
@@ -74,7 +76,6 @@ int runPlaneCommand(const PlaneCommandOptions& options) {
     Scene scene = sceneFromOptions(options);
     // Every check that can fail runs before the work, the output path included.
     validatePlaneScene(scene);
-    requireQuaternionAlgebra(scene, "plane");
     const std::string note = connectednessNote(scene);
     requireImageMemory(scene, planeMemoryBytes(scene), options, "the image");
     AtomicFile output(options.output);

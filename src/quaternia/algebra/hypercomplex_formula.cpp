@@ -5,6 +5,7 @@
 #include <cmath>
 #include <complex>
 
+#include "quaternia/algebra/complex_polynomial.h"
 #include "quaternia/algebra/formula_tree.h"
 #include "quaternia/util/error.h"
 
@@ -292,6 +293,28 @@ double HypercomplexFormula::derivativeNormBound(double r) const {
     for (int k = degree_; k >= 1; --k)
         sum = sum * r + double(k) * normBound_[size_t(k)];
     return sum;
+}
+
+std::optional<Quaternion> HypercomplexFormula::complexAxis() const {
+    if (transcendental_) return std::nullopt;
+    auto quaternionPart = [](const Hypercomplex& a) { return Quaternion(a[0], a[1], a[2], a[3]); };
+    Quaternion axis = kUnitI;
+    for (const Hypercomplex& a : constants_) {
+        if (imaginaryNorm(quaternionPart(a)) > 0) {
+            axis = planeAxis(quaternionPart(a));
+            break;
+        }
+    }
+    for (const Hypercomplex& a : constants_) {
+        for (size_t n = 4; n < a.size(); ++n)
+            if (a[n] != 0) return std::nullopt;
+        if (!inPlane(quaternionPart(a), axis)) return std::nullopt;
+    }
+    Hypercomplex square = table_->multiply({0, axis.x, axis.y, axis.z, 0, 0, 0, 0},
+                                           {0, axis.x, axis.y, axis.z, 0, 0, 0, 0});
+    square[0] += 1;
+    if (!(euclideanNorm(square) <= 1e-12)) return std::nullopt;
+    return axis;
 }
 
 }  // namespace quaternia

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -49,6 +50,14 @@ class HypercomplexFormula {
     // holds (normBound, derivativeNormBound and topDegreeMinimum mean nothing), and degree() is
     // taken as 2 for colouring.
     bool transcendental() const { return transcendental_; }
+
+    // A unit u of span{i, j, k} with u^2 = -1 in the algebra such that every constant of the
+    // formula (c included, where it appears) lies in span{1, u} (to inPlane's tolerance, its
+    // components 4 .. 7 exactly 0); i where every constant is real. span{1, u} is then a copy
+    // of C that the formula maps into itself, where it acts as the same formula does on
+    // span{1, u} in H: the complex polynomial of the quaternion expansion (complex_polynomial.h,
+    // restrictToComplexPlane). Nothing for transcendental formulas, or where no such u exists.
+    std::optional<Quaternion> complexAxis() const;
 
     // P's coefficients, lowest degree first (size degree() + 1).
     const std::vector<double>& normBound() const { return normBound_; }

@@ -181,5 +181,38 @@ TEST(HypercomplexFormula, FunctionsAreRefusedOutsideTheBicomplexNumbers) {
     }
 }
 
+TEST(HypercomplexFormula, ComplexAxisIsACopyOfCHoldingEveryConstant) {
+    using Complex = std::complex<double>;
+    const Hypercomplex cJ{0.3, 0, -0.5, 0, 0, 0, 0, 0};  // 0.3 - 0.5 j
+    // Bicomplex j^2 = -1: span{1, j} is C, and z^2 + (1 + 2j) z + c acts there as the complex
+    // polynomial w^2 + (1 + 2i) w + (0.3 - 0.5 i) in the coordinates x + y j.
+    const HypercomplexFormula bicomplex = compiled("z^2 + (1 + 2j) z + c", Algebra::kBicomplex, cJ);
+    const auto axis = bicomplex.complexAxis();
+    ASSERT_TRUE(axis);
+    EXPECT_EQ(*axis, Quaternion(0, 0, 1, 0));
+    for (const Complex w : {Complex(0.2, -0.7), Complex(-1.1, 0.4)}) {
+        const Hypercomplex value = bicomplex.evaluate({w.real(), 0, w.imag(), 0, 0, 0, 0, 0});
+        const Complex expected = w * w + Complex(1, 2) * w + Complex(0.3, -0.5);
+        EXPECT_NEAR(value[0], expected.real(), 1e-14);
+        EXPECT_NEAR(value[2], expected.imag(), 1e-14);
+        EXPECT_EQ(value[1], 0);
+        EXPECT_EQ(value[3], 0);
+    }
+    // Not with k (k^2 = +1), nor with constants in two planes, nor with functions.
+    EXPECT_FALSE(compiled("z^2 + 0.5k", Algebra::kBicomplex).complexAxis());
+    EXPECT_FALSE(compiled("z^2 + i z + c", Algebra::kBicomplex, cJ).complexAxis());
+    EXPECT_FALSE(compiled("sin(z) + 0.5", Algebra::kBicomplex).complexAxis());
+    // Coquaternions: i^2 = -1 but j^2 = +1.
+    EXPECT_TRUE(compiled("z^2 + 0.5i", Algebra::kCoquaternion).complexAxis());
+    EXPECT_FALSE(compiled("z^2 + c", Algebra::kCoquaternion, cJ).complexAxis());
+    // Real constants: the axis i, in every algebra.
+    for (Algebra algebra : allAlgebras())
+        EXPECT_EQ(compiled("z^3 - 2 z + 0.25", algebra).complexAxis(), Quaternion(0, 1, 0, 0));
+    // 8 components: the constants must lie in the quaternion half.
+    const Hypercomplex cUpper{0.3, 0, 0, 0, 0, 0.1, 0, 0};
+    EXPECT_FALSE(compiled("z^2 + c", Algebra::kOctonion, cUpper).complexAxis());
+    EXPECT_TRUE(compiled("z^2 + c", Algebra::kBiquaternion, cJ).complexAxis());
+}
+
 }  // namespace
 }  // namespace quaternia

@@ -9,7 +9,8 @@ namespace quaternia {
 namespace {
 
 using Complex = std::complex<double>;
-using ComplexMatrix4 = std::array<std::array<Complex, 4>, 4>;
+template <std::size_t N>
+using ComplexMatrix = std::array<std::array<Complex, N>, N>;
 
 Classification classifyModuli(double smallest, double largest) {
     auto unsureNear = [](double value, double boundary) {
@@ -39,27 +40,29 @@ Classification classifyModuli(double smallest, double largest) {
 
 // Real Givens rotations on rows and columns (i - 1, i) zero the entries below the
 // subdiagonal: a similarity, so the eigenvalues are kept.
-ComplexMatrix4 hessenberg(Matrix4 a) {
-    for (int k = 0; k < 2; ++k) {
-        for (int i = 3; i >= k + 2; --i) {
+template <std::size_t N>
+ComplexMatrix<N> hessenberg(Matrix<N> a) {
+    constexpr int n = int(N);
+    for (int k = 0; k < n - 2; ++k) {
+        for (int i = n - 1; i >= k + 2; --i) {
             double x = a[i - 1][k], y = a[i][k], r = std::hypot(x, y);
             if (r == 0) continue;
             double c = x / r, s = y / r;
-            for (int j = 0; j < 4; ++j) {
+            for (int j = 0; j < n; ++j) {
                 double t1 = a[i - 1][j], t2 = a[i][j];
                 a[i - 1][j] = c * t1 + s * t2;
                 a[i][j] = -s * t1 + c * t2;
             }
-            for (int j = 0; j < 4; ++j) {
+            for (int j = 0; j < n; ++j) {
                 double t1 = a[j][i - 1], t2 = a[j][i];
                 a[j][i - 1] = c * t1 + s * t2;
                 a[j][i] = -s * t1 + c * t2;
             }
         }
     }
-    ComplexMatrix4 h;
-    for (int i = 0; i < 4; ++i) {
-        for (int j = 0; j < 4; ++j)
+    ComplexMatrix<N> h;
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j)
             h[i][j] = a[i][j];
     }
     return h;
@@ -67,7 +70,8 @@ ComplexMatrix4 hessenberg(Matrix4 a) {
 
 // The eigenvalue of the trailing 2x2 block of rows/columns [hi - 1, hi] nearer its last
 // diagonal entry (Wilkinson's shift).
-Complex wilkinsonShift(const ComplexMatrix4& h, int hi) {
+template <std::size_t N>
+Complex wilkinsonShift(const ComplexMatrix<N>& h, int hi) {
     Complex a = h[hi - 1][hi - 1], b = h[hi - 1][hi], c = h[hi][hi - 1], d = h[hi][hi];
     Complex half = 0.5 * (a + d), root = std::sqrt(half * half - (a * d - b * c));
     Complex e1 = half + root, e2 = half - root;
@@ -75,8 +79,9 @@ Complex wilkinsonShift(const ComplexMatrix4& h, int hi) {
 }
 
 // One shifted QR step H - s I = QR, H <- RQ + s I on the unreduced block [lo, hi].
-void qrStep(ComplexMatrix4& h, int lo, int hi, Complex shift) {
-    std::array<std::pair<Complex, Complex>, 3> rotations;
+template <std::size_t N>
+void qrStep(ComplexMatrix<N>& h, int lo, int hi, Complex shift) {
+    std::array<std::pair<Complex, Complex>, N - 1> rotations;
     for (int k = lo; k <= hi; ++k)
         h[k][k] -= shift;
     for (int k = lo; k < hi; ++k) {
@@ -134,18 +139,20 @@ Classification classifyEigenvalues(const std::vector<std::complex<double>>& eige
     return classifyModuli(smallest, largest);
 }
 
-Matrix4 identityMatrix4() {
-    Matrix4 m{};
-    for (int i = 0; i < 4; ++i)
+template <std::size_t N>
+Matrix<N> identityMatrix() {
+    Matrix<N> m{};
+    for (std::size_t i = 0; i < N; ++i)
         m[i][i] = 1;
     return m;
 }
 
-Matrix4 operator*(const Matrix4& a, const Matrix4& b) {
-    Matrix4 m{};
-    for (int i = 0; i < 4; ++i) {
-        for (int j = 0; j < 4; ++j) {
-            for (int k = 0; k < 4; ++k)
+template <std::size_t N>
+Matrix<N> operator*(const Matrix<N>& a, const Matrix<N>& b) {
+    Matrix<N> m{};
+    for (std::size_t i = 0; i < N; ++i) {
+        for (std::size_t j = 0; j < N; ++j) {
+            for (std::size_t k = 0; k < N; ++k)
                 m[i][j] += a[i][k] * b[k][j];
         }
     }
@@ -171,16 +178,17 @@ Matrix4 cycleJacobian(const Polynomial& p, const std::vector<Quaternion>& cycle)
     return m;
 }
 
-std::array<std::complex<double>, 4> eigenvalues(const Matrix4& m) {
-    ComplexMatrix4 h = hessenberg(m);
-    std::array<Complex, 4> result;
+template <std::size_t N>
+std::array<std::complex<double>, N> eigenvalues(const Matrix<N>& m) {
+    ComplexMatrix<N> h = hessenberg<N>(m);
+    std::array<Complex, N> result;
     constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
     double scale = 0;
     for (const auto& row : m) {
         for (double v : row)
             scale = std::max(scale, std::abs(v));
     }
-    int hi = 3, iterations = 0;
+    int hi = int(N) - 1, iterations = 0;
     while (hi > 0) {
         int lo = hi;
         for (; lo > 0; --lo) {
@@ -190,16 +198,16 @@ std::array<std::complex<double>, 4> eigenvalues(const Matrix4& m) {
                 break;
             }
         }
-        if (lo == hi || iterations > 200) {  // 200: never reached for 4x4 in practice
+        if (lo == hi || iterations > 200) {  // 200: never reached for 4x4 or 8x8 in practice
             result[hi] = h[hi][hi];
             --hi;
             iterations = 0;
             continue;
         }
-        Complex shift = wilkinsonShift(h, hi);
+        Complex shift = wilkinsonShift<N>(h, hi);
         // An exceptional shift now and then breaks the rare cycles of the plain one.
         if (++iterations % 11 == 0) shift += 0.75 * std::abs(h[hi][hi - 1]);
-        qrStep(h, lo, hi, shift);
+        qrStep<N>(h, lo, hi, shift);
     }
     result[0] = h[0][0];
     // Keys rounded to 12 digits, so that rounding does not reorder equal moduli (lambda and
@@ -212,34 +220,45 @@ std::array<std::complex<double>, 4> eigenvalues(const Matrix4& m) {
     return result;
 }
 
-bool solve(Matrix4 m, std::array<double, 4> b, std::array<double, 4>& x) {
+template <std::size_t N>
+bool solve(Matrix<N> m, std::array<double, N> b, std::array<double, N>& x) {
+    constexpr int n = int(N);
     double largest = 0;
     for (const auto& row : m) {
         for (double v : row)
             largest = std::max(largest, std::abs(v));
     }
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < n; ++k) {
         int pivot = k;
-        for (int i = k + 1; i < 4; ++i) {
+        for (int i = k + 1; i < n; ++i) {
             if (std::abs(m[i][k]) > std::abs(m[pivot][k])) pivot = i;
         }
         if (!(std::abs(m[pivot][k]) > 1e-14 * largest)) return false;
         std::swap(m[k], m[pivot]);
         std::swap(b[k], b[pivot]);
-        for (int i = k + 1; i < 4; ++i) {
+        for (int i = k + 1; i < n; ++i) {
             double factor = m[i][k] / m[k][k];
-            for (int j = k; j < 4; ++j)
+            for (int j = k; j < n; ++j)
                 m[i][j] -= factor * m[k][j];
             b[i] -= factor * b[k];
         }
     }
-    for (int k = 3; k >= 0; --k) {
+    for (int k = n - 1; k >= 0; --k) {
         double sum = b[k];
-        for (int j = k + 1; j < 4; ++j)
+        for (int j = k + 1; j < n; ++j)
             sum -= m[k][j] * x[j];
         x[k] = sum / m[k][k];
     }
     return true;
 }
+
+template Matrix<4> identityMatrix<4>();
+template Matrix<8> identityMatrix<8>();
+template Matrix<4> operator*(const Matrix<4>&, const Matrix<4>&);
+template Matrix<8> operator*(const Matrix<8>&, const Matrix<8>&);
+template std::array<std::complex<double>, 4> eigenvalues<4>(const Matrix<4>&);
+template std::array<std::complex<double>, 8> eigenvalues<8>(const Matrix<8>&);
+template bool solve<4>(Matrix<4>, std::array<double, 4>, std::array<double, 4>&);
+template bool solve<8>(Matrix<8>, std::array<double, 8>, std::array<double, 8>&);
 
 }  // namespace quaternia

@@ -52,6 +52,31 @@ TEST(Cycle, EigenvaluesOfCompanionMatrix) {
     expectNear(e[3], Complex(0, -1), 1e-13);
 }
 
+TEST(Cycle, EigenvaluesAndSolveOf8x8BlockMatrix) {
+    // The companion matrix above, similarity-mixed with a second block diag(3, -0.5, 0.25 +-
+    // 0.5 i) (a rotation-scaling block): eigenvalues of both blocks, sorted as for 4x4.
+    Matrix8 m{};
+    const Matrix4 companion{{{-1, 1, -1, 2}, {1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
+    for (size_t i = 0; i < 4; ++i)
+        for (size_t j = 0; j < 4; ++j)
+            m[i][j] = companion[i][j];
+    m[4][4] = 3, m[5][5] = -0.5, m[6][6] = 0.25, m[6][7] = -0.5, m[7][6] = 0.5, m[7][7] = 0.25;
+    // A shear between the blocks keeps the eigenvalues (block triangular).
+    m[0][5] = 0.7, m[2][6] = -1.1;
+    auto e = eigenvalues(m);
+    const std::array<Complex, 8> expected = {
+        3, -2, 1, Complex(0, 1), Complex(0, -1), Complex(0.25, 0.5), Complex(0.25, -0.5), -0.5};
+    for (size_t k = 0; k < 8; ++k)
+        expectNear(e[k], expected[k], 1e-12);
+    std::array<double, 8> x{}, b{};
+    for (size_t i = 0; i < 8; ++i)
+        for (size_t j = 0; j < 8; ++j)
+            b[i] += m[i][j];  // m (1, ..., 1)
+    ASSERT_TRUE(solve(m, b, x));
+    for (double v : x)
+        EXPECT_NEAR(v, 1, 1e-13);
+}
+
 TEST(Cycle, SolvesLinearSystemAndRefusesSingular) {
     Matrix4 m{{{2, 1, 0, 0}, {1, 3, 1, 0}, {0, 1, 4, 1}, {0, 0, 1, 5}}};
     std::array<double, 4> x{};

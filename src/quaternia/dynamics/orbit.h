@@ -21,6 +21,15 @@
 //   convergence to a neutral cycle).
 // `unsure` marks results that rounding could change (neutral cycles, a Newton refinement that
 // failed, a multiplier within kUnsureBand of a class boundary); `note` says why.
+//
+// The same analysis runs in the other algebras of hypercomplex.h (analyzeHypercomplexOrbit):
+// the map is the HypercomplexFormula, the Jacobian of f^n is N x N with N the algebra's
+// dimension (4 or 8), built from its directional derivatives along the basis, and the class is
+// that of its eigenvalues; the complex multiplier is that of the copy span{1, u} of C the
+// formula maps into itself (HypercomplexFormula::complexAxis), for cycles in it, where p is
+// complex-analytic and its derivative along 1 is p'(z). Escape is |z| > the set's escape
+// radius (HypercomplexJuliaSet::escapeRadius): certain for octonions and bicomplex numbers,
+// K_N's test for coquaternions and biquaternions, whose null elements leave no radius certain.
 #pragma once
 
 #include <array>
@@ -30,6 +39,7 @@
 #include <vector>
 
 #include "quaternia/algebra/complex_polynomial.h"
+#include "quaternia/algebra/hypercomplex_formula.h"
 #include "quaternia/algebra/polynomial.h"
 #include "quaternia/dynamics/cycle.h"
 
@@ -39,13 +49,16 @@ enum class OrbitFate { Escapes, Periodic, Preperiodic, Attracted, Undecided };
 
 std::string toString(OrbitFate fate);
 
-struct CycleAnalysis {
-    std::vector<Quaternion> points;  // points[k + 1] = p(points[k]); points[0] is where the
-                                     // orbit meets the cycle
+// A cycle of a map on points `Point` of an N-dimensional algebra: Quaternion and 4 for H
+// (CycleAnalysis), Hypercomplex and 4 or 8 for the others (HypercomplexCycleAnalysis).
+template <typename Point, std::size_t N>
+struct BasicCycleAnalysis {
+    std::vector<Point> points;  // points[k + 1] = p(points[k]); points[0] is where the
+                                // orbit meets the cycle
     int period() const { return int(points.size()); }
-    Matrix4 jacobian{};  // of f^n at points[0]
-    std::array<std::complex<double>, 4> eigenvalues{};
-    Classification classInH;
+    Matrix<N> jacobian{};  // of f^n at points[0]
+    std::array<std::complex<double>, N> eigenvalues{};
+    Classification classInH;  // the class from the eigenvalues, in H or the algebra
     // When the coefficients and the cycle lie in one plane C_u: the complex multiplier
     // lambda = prod p'(z_k) of the restriction, in the coordinates x + y u, and its class.
     std::optional<std::complex<double>> multiplier;
@@ -54,6 +67,10 @@ struct CycleAnalysis {
     double residual = 0;   // max over the points of |f^n(w) - w|
     bool refined = false;  // Newton converged; otherwise the points are the orbit's own
 };
+
+using CycleAnalysis = BasicCycleAnalysis<Quaternion, 4>;
+template <std::size_t N>
+using HypercomplexCycleAnalysis = BasicCycleAnalysis<Hypercomplex, N>;
 
 // Multipliers, eigenvalues and classes of a cycle given by its first point (already refined).
 CycleAnalysis analyzeCycle(const Polynomial& p, const Quaternion& start, int period);
@@ -64,11 +81,12 @@ struct OrbitOptions {
     double tolerance = 1e-9;  // relative to the orbit's scale
 };
 
-struct OrbitResult {
+template <typename Cycle>
+struct BasicOrbitResult {
     OrbitFate fate = OrbitFate::Undecided;
     int escapeIteration = -1;  // Escapes: the first k with |z_k| > escapeRadius
     int preperiod = 0;         // Preperiodic: m; Attracted: the iteration it came within tol
-    std::optional<CycleAnalysis> cycle;
+    std::optional<Cycle> cycle;
     // The class that governs this orbit: complex when the orbit lies in the plane of the
     // coefficients, else in H.
     Classification governingClass;
@@ -79,10 +97,25 @@ struct OrbitResult {
     int iterations = 0;    // iterates computed
 };
 
+using OrbitResult = BasicOrbitResult<CycleAnalysis>;
+template <std::size_t N>
+using HypercomplexOrbitResult = BasicOrbitResult<HypercomplexCycleAnalysis<N>>;
+
 // Throws UserError (from Polynomial::escapeRadius) for a degree below 2 or a possibly
 // unbounded polynomial.
 OrbitResult analyzeOrbit(const Polynomial& p, const Quaternion& z0,
                          const OrbitOptions& options = {});
+
+// The orbit of z0 under `formula` in its algebra, escaping where |z| > escapeRadius (the
+// HypercomplexJuliaSet's escapeRadius()). N must be formula.dimension() (4 or 8); throws
+// std::invalid_argument otherwise.
+template <std::size_t N>
+HypercomplexOrbitResult<N> analyzeHypercomplexOrbit(const HypercomplexFormula& formula,
+                                                    double escapeRadius, const Hypercomplex& z0,
+                                                    const OrbitOptions& options = {});
+// The Jacobian of the formula at z: column a is the derivative along e_a (N = dimension()).
+template <std::size_t N>
+Matrix<N> hypercomplexJacobian(const HypercomplexFormula& formula, const Hypercomplex& z);
 
 // A complex polynomial as the quaternion polynomial sum a_k z^k with coefficients in C_i.
 Polynomial quaternionPolynomial(const ComplexPolynomial& p);

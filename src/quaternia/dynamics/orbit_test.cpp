@@ -5,6 +5,7 @@
 #include "quaternia/algebra/formula.h"
 #include "quaternia/algebra/test_helpers.h"
 #include "quaternia/dynamics/connectedness.h"
+#include "quaternia/fractal/hypercomplex_julia.h"
 
 namespace quaternia {
 namespace {
@@ -180,6 +181,155 @@ TEST(Orbit, ConnectednessFromCriticalOrbits) {
     Connectedness parabolic = connectedness(complexMap("z^2 + c", -0.75), 300);
     EXPECT_TRUE(parabolic.connected);
     EXPECT_FALSE(parabolic.certain);
+}
+
+// ---- Other algebras (issue 16) ------------------------------------------------------------
+
+void expectNearComplex(Complex actual, Complex expected, double tolerance) {
+    EXPECT_NEAR(actual.real(), expected.real(), tolerance);
+    EXPECT_NEAR(actual.imag(), expected.imag(), tolerance);
+}
+
+Hypercomplex hypercomplex(const Quaternion& q) {
+    return {q.w, q.x, q.y, q.z, 0, 0, 0, 0};
+}
+
+template <std::size_t N>
+HypercomplexOrbitResult<N> hypercomplexOrbitOf(Algebra algebra, const Hypercomplex& c,
+                                               const Hypercomplex& z0) {
+    const HypercomplexJuliaSet set(HypercomplexFormula(Formula::parse("z^2 + c"), algebra, c), 100,
+                                   0);
+    return analyzeHypercomplexOrbit<N>(set.formula(), set.escapeRadius(), z0);
+}
+
+TEST(HypercomplexOrbit, OctonionOrbitInTheQuaternionHalfIsTheQuaternionOrbit) {
+    // (a, 0)(c, 0) = (ac, 0): the quaternions are a subalgebra, so the orbit, its fate and
+    // cycle are the quaternion ones. Off it, D(z^2)(0, d) = (0, d) 2 Re z ((a, 0)(0, d) +
+    // (0, d)(a, 0) = (0, d (a + conj a))): the 8x8 Jacobian of f^n is diag(J_H, prod 2 Re z_k).
+    const Quaternion z0(0.05, 0.02, 0.03, 0);
+    const OrbitResult h = orbitOf(kRabbit, z0);
+    const auto o =
+        hypercomplexOrbitOf<8>(Algebra::kOctonion, hypercomplex(kRabbit), hypercomplex(z0));
+    EXPECT_EQ(o.fate, h.fate);
+    EXPECT_EQ(o.fate, OrbitFate::Attracted);
+    EXPECT_EQ(o.preperiod, h.preperiod);
+    ASSERT_TRUE(o.cycle && h.cycle);
+    ASSERT_EQ(o.cycle->period(), 3);
+    ASSERT_TRUE(o.cycle->multiplier && h.cycle->multiplier);  // the cycle lies in C_i
+    EXPECT_EQ(*o.cycle->multiplier, *h.cycle->multiplier);
+    double product = 1;
+    for (int k = 0; k < 3; ++k) {
+        const Hypercomplex& w = o.cycle->points[size_t(k)];
+        expectNear(Quaternion(w[0], w[1], w[2], w[3]), h.cycle->points[size_t(k)], 1e-12);
+        for (size_t n = 4; n < 8; ++n)
+            EXPECT_EQ(w[n], 0);
+        product *= 2 * w[0];
+    }
+    for (size_t i = 0; i < 8; ++i) {
+        for (size_t j = 0; j < 8; ++j) {
+            const double expected = i < 4 && j < 4     ? h.cycle->jacobian[i][j]
+                                    : i == j && i >= 4 ? product
+                                                       : 0.0;
+            EXPECT_NEAR(o.cycle->jacobian[i][j], expected, 1e-12) << i << ", " << j;
+        }
+    }
+    // The rabbit's cycle holds the critical point 0: every eigenvalue is 0.
+    for (Complex e : o.cycle->eigenvalues)
+        EXPECT_NEAR(std::abs(e), 0, 1e-6);
+    EXPECT_EQ(o.governingClass.stability, h.cycle->classInH.stability);
+}
+
+TEST(HypercomplexOrbit, BicomplexOrbitIsTwoComplexOrbitsInDuplexForm) {
+    // The duplex form is an isomorphism onto C x C: z^2 + c acts as w^2 + c_1 and w^2 + c_2.
+    // c_1 = the rabbit (a superattracting 3-cycle through 0), c_2 with an attracting fixed
+    // point w* = (1 - sqrt(1 - 4 c_2)) / 2 of multiplier mu = 2 w*. The orbit lands near the
+    // product cycle, of period 3; in the duplex coordinates D f^3 is multiplication by
+    // (0, mu^3), so the real 4x4 Jacobian has the eigenvalues mu^3, conj mu^3, 0, 0.
+    const Complex c1(kRabbit.w, kRabbit.x), c2(-0.1, 0.1);
+    const Complex fixed = (1.0 - std::sqrt(1.0 - 4.0 * c2)) / 2.0, mu3 = std::pow(2.0 * fixed, 3);
+    const Hypercomplex c = fromDuplexForm(c1, c2);
+    const auto r = hypercomplexOrbitOf<4>(Algebra::kBicomplex, c, fromDuplexForm(0.01, 0.02));
+    EXPECT_EQ(r.fate, OrbitFate::Attracted);
+    ASSERT_TRUE(r.cycle);
+    ASSERT_EQ(r.cycle->period(), 3);
+    for (const Hypercomplex& w : r.cycle->points) {
+        const auto [a, b] = duplexForm(w);
+        const Complex image = a * a + c1;  // a is on the rabbit's cycle
+        EXPECT_TRUE(std::abs(a) < 1e-9 || std::abs(a - c1) < 1e-9 ||
+                    std::abs(a - (c1 * c1 + c1)) < 1e-9)
+            << a << " -> " << image;
+        EXPECT_NEAR(std::abs(b - fixed), 0, 1e-9);
+    }
+    const auto& e = r.cycle->eigenvalues;
+    expectNearComplex(e[0], Complex(mu3.real(), std::abs(mu3.imag())), 1e-9);
+    expectNearComplex(e[1], Complex(mu3.real(), -std::abs(mu3.imag())), 1e-9);
+    EXPECT_NEAR(std::abs(e[2]), 0, 1e-6);
+    EXPECT_NEAR(std::abs(e[3]), 0, 1e-6);
+    EXPECT_EQ(r.governingClass.stability, Stability::Attracting);
+
+    // Escape: at the first k with |q_k|^2 = (|a_k|^2 + |b_k|^2) / 2 > 4^2, the bailout.
+    const Complex a0(0.3, 0.2), b0(0.9, 0.6);
+    const auto escaping = hypercomplexOrbitOf<4>(Algebra::kBicomplex, c, fromDuplexForm(a0, b0));
+    Complex a = a0, b = b0;
+    int k = 0;
+    while ((std::norm(a) + std::norm(b)) / 2 <= 16) {
+        a = a * a + c1, b = b * b + c2;
+        ++k;
+    }
+    EXPECT_EQ(escaping.fate, OrbitFate::Escapes);
+    EXPECT_EQ(escaping.escapeIteration, k);
+    EXPECT_GT(k, 2);
+}
+
+TEST(HypercomplexOrbit, CoquaternionOrbitInTheComplexPlaneIsTheComplexOne) {
+    // i^2 = -1: span{1, i} is a subalgebra equal to C, and D(z^2)h = zh + hz = 2 Re z h for h
+    // in span{j, k} as in H (ij = -ji): the same orbit, cycle and Jacobian as the quaternions'.
+    for (const Quaternion& z0 : {Quaternion(0.05, 0.02, 0, 0), Quaternion(0)}) {
+        const OrbitResult h = orbitOf(-1.0, z0);
+        const auto q =
+            hypercomplexOrbitOf<4>(Algebra::kCoquaternion, realElement(-1), hypercomplex(z0));
+        EXPECT_EQ(q.fate, h.fate);
+        EXPECT_EQ(q.preperiod, h.preperiod);
+        ASSERT_TRUE(q.cycle && h.cycle);
+        ASSERT_EQ(q.cycle->period(), 2);
+        for (size_t k = 0; k < 4; ++k)
+            expectNearComplex(q.cycle->eigenvalues[k], h.cycle->eigenvalues[k], 1e-12);
+        EXPECT_EQ(q.cycle->classInH.stability, Stability::Superattracting);
+    }
+}
+
+TEST(HypercomplexOrbit, BicomplexFixedPointInSpanOneJHasTheComplexMultiplier) {
+    // j^2 = -1: span{1, j} is a copy of C, so with c = -0.5 + 0.3 j the fixed point
+    // w* = (1 - sqrt(1 - 4c)) / 2 (read as x + y j) has the multiplier 2 w*. In duplex form
+    // x + y j is (x + y i, x - y i), a fixed point of w^2 + c_1 and of its conjugate map, so
+    // the 4x4 Jacobian has 2 w* and its conjugate twice each.
+    const Complex c(-0.5, 0.3), fixed = (1.0 - std::sqrt(1.0 - 4.0 * c)) / 2.0;
+    const auto r = hypercomplexOrbitOf<4>(Algebra::kBicomplex, {c.real(), 0, c.imag(), 0},
+                                          {fixed.real(), 0, fixed.imag(), 0});
+    EXPECT_EQ(r.fate, OrbitFate::Periodic);
+    ASSERT_TRUE(r.cycle && r.cycle->multiplier);
+    EXPECT_EQ(r.cycle->period(), 1);
+    EXPECT_EQ(r.cycle->axis, Quaternion(0, 0, 1, 0));
+    expectNearComplex(*r.cycle->multiplier, 2.0 * fixed, 1e-12);
+    EXPECT_EQ(r.governingClass.stability, Stability::Attracting);  // |2 w*| = 0.83
+    const auto& e = r.cycle->eigenvalues;
+    const Complex upper(2 * fixed.real(), std::abs(2 * fixed.imag()));
+    expectNearComplex(e[0], upper, 1e-12);
+    expectNearComplex(e[1], upper, 1e-12);
+    expectNearComplex(e[2], std::conj(upper), 1e-12);
+    expectNearComplex(e[3], std::conj(upper), 1e-12);
+    // An orbit from off the plane converges to the same cycle; its class is the Jacobian's.
+    const auto off =
+        hypercomplexOrbitOf<4>(Algebra::kBicomplex, {c.real(), 0, c.imag(), 0}, {0.01, 0.02, 0, 0});
+    ASSERT_TRUE(off.cycle);
+    EXPECT_EQ(off.fate, OrbitFate::Attracted);
+    EXPECT_EQ(off.cycle->period(), 1);
+    EXPECT_EQ(off.governingClass.stability, off.cycle->classInH.stability);
+}
+
+TEST(HypercomplexOrbit, DimensionMustBeTheAlgebras) {
+    const HypercomplexFormula f(Formula::parse("z^2 + c"), Algebra::kOctonion, realElement(-1));
+    EXPECT_THROW(analyzeHypercomplexOrbit<4>(f, 2, Hypercomplex{}), std::invalid_argument);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "quaternia/dynamics/basins.h"
 #include "quaternia/dynamics/mandelbrot.h"
 #include "quaternia/fractal/distance.h"
+#include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/image/png_writer.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/parameters.h"
@@ -81,25 +82,102 @@ PlaneImage renderSamples(const PlaneView& view, int samples, const PlaneRenderOp
     return result;
 }
 
-// Julia-set kinds: each plane point is a quaternion (`toQuaternion`), iterated by JuliaSet, the
-// one iteration of the library, so that a complex image and the same plane sliced out of H go
-// through the very same arithmetic. `scale` is the length in H of one plane unit.
-template <typename ToQuaternion>
-PlaneImage renderJulia(const Scene& scene, const PlaneView& view, double scale,
-                       const PlaneRenderOptions& options, const ToQuaternion& toQuaternion) {
-    const JuliaSet set = juliaSetOfScene(scene);
+// Julia-set kinds: each plane point z goes through `estimateAt(z)` (a DistanceEstimate of the
+// set at the point the plane point stands for). `scale` is the length in the algebra of one
+// plane unit.
+template <typename EstimateAt>
+PlaneImage renderEscape(const Scene& scene, const PlaneView& view, double scale,
+                        const PlaneRenderOptions& options, const EstimateAt& estimateAt) {
     const double pixelSize = view.pixelSize() * scale;
     if (scene.plane.kind == PlaneKind::JuliaBoundary) {
         const double lineWidth = scene.plane.boundaryWidth * pixelSize;
         return renderSamples(view, scene.render.samples, options, [&](std::complex<double> z) {
-            DistanceEstimate e = set.estimate(toQuaternion(z));
+            DistanceEstimate e = estimateAt(z);
             return !e.inside && e.distance < lineWidth ? boundaryColor() : interiorColor();
         });
     }
     return renderSamples(view, scene.render.samples, options, [&](std::complex<double> z) {
-        DistanceEstimate e = set.estimate(toQuaternion(z));
+        DistanceEstimate e = estimateAt(z);
         return escapeShade(e.inside, e.smoothIteration, e.distance, pixelSize);
     });
+}
+
+// The quaternion kinds: each plane point is a quaternion (`toQuaternion`), iterated by
+// JuliaSet, the one iteration of the library, so that a complex image and the same plane
+// sliced out of H go through the very same arithmetic.
+template <typename ToQuaternion>
+PlaneImage renderJulia(const Scene& scene, const PlaneView& view, double scale,
+                       const PlaneRenderOptions& options, const ToQuaternion& toQuaternion) {
+    const JuliaSet set = juliaSetOfScene(scene);
+    return renderEscape(scene, view, scale, options,
+                        [&](std::complex<double> z) { return set.estimate(toQuaternion(z)); });
+}
+
+// The set of a scene in another algebra, iterated plane.max_iterations times (the renderer's
+// HypercomplexJuliaSet with the plane's iteration count).
+std::shared_ptr<const HypercomplexFractal> hypercomplexSetOfScene(const Scene& scene) {
+    Scene planeScene = scene;
+    planeScene.fractal.maxIterations = scene.plane.maxIterations;
+    return hypercomplexFractalFromScene(planeScene);
+}
+
+// The slice kind in another algebra: plane.origin + x plane.u + y plane.v is the algebra's
+// point (components 1, i, j, k) for the 4-component algebras, as for the quaternions; for the
+// 8-component ones its first three components are a point of the 3D slice (slice.origin,
+// slice.axes), which maps it into the algebra. Membership is HypercomplexJuliaSet::contains,
+// K_N exactly as the renderer and the mesher take it; the estimate only colours escaping points.
+PlaneImage renderHypercomplexSlice(const Scene& scene, const PlaneView& view,
+                                   const PlaneRenderOptions& options) {
+    const auto fractal = hypercomplexSetOfScene(scene);
+    const HypercomplexJuliaSet& set = fractal->set;
+    const PlaneSettings& plane = scene.plane;
+    const bool throughSlice = algebraDimension(scene.fractal.algebra) == 8;
+    const double scale = std::sqrt(norm(plane.u) * norm(plane.v));
+    return renderEscape(scene, view, scale, options, [&](std::complex<double> z) {
+        const Quaternion q = plane.origin + plane.u * z.real() + plane.v * z.imag();
+        const Hypercomplex point = throughSlice ? fractal->slice.fromWorld(Point3d(q.w, q.x, q.y))
+                                                : Hypercomplex{q.w, q.x, q.y, q.z, 0, 0, 0, 0};
+        if (set.contains(point)) {
+            DistanceEstimate inside;
+            inside.inside = true;
+            return inside;
+        }
+        DistanceEstimate e = set.estimate(point);
+        e.inside = false;
+        return e;
+    });
+}
+
+// The complex kinds in another algebra: where the formula maps a copy span{1, u} of C into
+// itself with every constant in it (HypercomplexFormula::complexAxis), it acts there as the
+// same formula on span{1, u} in H, so the quaternion scene with c's components 0 .. 3 has the
+// same complex restriction, and that scene is drawn. The Mandelbrot set of z^d + c is checked
+// with c = 0.5 + 0.25 i: every other constant must then lie in span{1, i}, where the formula is
+// z^d + c for each complex c as the quaternion check finds. Refused, naming plane.kind and the
+// algebra, where there is no such plane. The quaternions' scene is returned as it is.
+Scene complexKindScene(const Scene& scene) {
+    if (scene.fractal.algebra == Algebra::kQuaternion) return scene;
+    const bool mandelbrot = scene.plane.kind == PlaneKind::Mandelbrot;
+    Scene probe = scene;
+    if (mandelbrot) {
+        probe.fractal.c = Quaternion(0.5, 0.25, 0, 0);
+        probe.fractal.cUpper = {};
+    }
+    const auto axis = hypercomplexSetOfScene(probe)->set.formula().complexAxis();
+    if (!axis || (mandelbrot && !inPlane(kUnitI, *axis)))
+        throw UserError("plane.kind",
+                        "plane.kind = \"" + kindName(scene) +
+                            "\" needs a plane span{1, u} (u^2 = -1) holding every constant of "
+                            "fractal.formula and fractal.c, and fractal.algebra = \"" +
+                            std::string(algebraName(scene.fractal.algebra)) +
+                            "\" has none for them; plane.kind = \"slice\" draws any formula");
+    Scene quaternion = scene;
+    quaternion.fractal.algebra = Algebra::kQuaternion;
+    quaternion.fractal.cUpper = {};
+    quaternion.fractal.cComponents = 4;
+    quaternion.slice.origin.clear();
+    quaternion.slice.axes.clear();
+    return quaternion;
 }
 
 }  // namespace
@@ -132,6 +210,8 @@ PlaneView planeViewFromScene(const Scene& scene) {
 }
 
 ComplexRestriction complexRestrictionOfScene(const Scene& scene) {
+    if (scene.fractal.algebra != Algebra::kQuaternion)
+        return complexRestrictionOfScene(complexKindScene(scene));
     auto restriction =
         restrictToComplexPlane(compileFormula(scene.fractal.formula, scene.fractal.c));
     if (!restriction)
@@ -154,8 +234,16 @@ ComplexRestriction complexRestrictionOfScene(const Scene& scene) {
 
 void validatePlaneScene(const Scene& scene) {
     validateScene(scene);
-    juliaSetOfScene(scene);  // the formula compiles, the bailout is usable
     const PlaneSettings& plane = scene.plane;
+    if (scene.fractal.algebra != Algebra::kQuaternion) {
+        hypercomplexSetOfScene(scene);  // formula, bailout and slice keys
+        if (plane.kind != PlaneKind::Slice) {
+            validatePlaneScene(complexKindScene(scene));
+            return;
+        }
+    } else {
+        juliaSetOfScene(scene);  // the formula compiles, the bailout is usable
+    }
     switch (plane.kind) {
         case PlaneKind::Julia:
         case PlaneKind::JuliaBoundary:
@@ -176,6 +264,19 @@ void validatePlaneScene(const Scene& scene) {
                 throw UserError("plane.v",
                                 "plane.v is parallel to plane.u; a slice needs two "
                                 "independent directions of H");
+            if (algebraDimension(scene.fractal.algebra) == 8) {
+                // The plane lies in the 3D slice: its points have three coordinates.
+                for (const auto& [key, q] :
+                     {std::pair<const char*, const Quaternion&>{"plane.origin", plane.origin},
+                      {"plane.u", plane.u},
+                      {"plane.v", plane.v}})
+                    if (q.z != 0)
+                        throw UserError(key, std::string(key) + ": with fractal.algebra = \"" +
+                                                 std::string(algebraName(scene.fractal.algebra)) +
+                                                 "\" the plane lies in the 3D slice "
+                                                 "(slice.origin, slice.axes), so its fourth "
+                                                 "component must be 0");
+            }
             break;
         }
     }
@@ -183,6 +284,8 @@ void validatePlaneScene(const Scene& scene) {
 
 PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
     validatePlaneScene(scene);
+    if (scene.fractal.algebra != Algebra::kQuaternion && scene.plane.kind != PlaneKind::Slice)
+        return renderPlane(complexKindScene(scene), options);
     const PlaneView view = planeViewFromScene(scene);
     const PlaneSettings& plane = scene.plane;
     switch (plane.kind) {
@@ -193,6 +296,8 @@ PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
                                [&](std::complex<double> z) { return restriction.toQuaternion(z); });
         }
         case PlaneKind::Slice: {
+            if (scene.fractal.algebra != Algebra::kQuaternion)
+                return renderHypercomplexSlice(scene, view, options);
             const double scale = std::sqrt(norm(plane.u) * norm(plane.v));
             return renderJulia(scene, view, scale, options, [&](std::complex<double> z) {
                 return plane.origin + plane.u * z.real() + plane.v * z.imag();

@@ -1,6 +1,7 @@
 // 2D images of complex and quaternion dynamics (`quaternia plane`): the filled Julia set K_c
 // with smooth escape colouring, the Julia set J_c drawn thin by its distance estimate, the
-// Mandelbrot set of z^d + c, basins of attraction (basins.h), and any plane through H. One view
+// Mandelbrot set of z^d + c, basins of attraction (basins.h), and any plane through H or,
+// in the other algebras of fractal.algebra, through the set there (the slice kind). One view
 // (PlaneView: centre, width, rotation, image size) for every kind; stratified samples per pixel
 // as the 3D renderer takes them (samplePosition), tiles spread by the one parallel-for.
 #pragma once
@@ -28,7 +29,8 @@ struct PlaneImage {
 // The view of plane.center, plane.width, plane.rotation at render.width x render.height.
 PlaneView planeViewFromScene(const Scene& scene);
 
-// The complex polynomial that fractal.formula with fractal.c restricts to (complex_polynomial.h),
+// The complex polynomial that fractal.formula with fractal.c restricts to (complex_polynomial.h;
+// in another algebra, on its copy span{1, u} of C, as validatePlaneScene says),
 // with the plane turned so that a formula in span{1, i} keeps its orientation (c = a - b i is
 // drawn as itself, not as its mirror image a + b i). Throws UserError naming fractal.formula
 // when the coefficients share no complex plane.
@@ -36,7 +38,12 @@ ComplexRestriction complexRestrictionOfScene(const Scene& scene);
 
 // validateScene, then what the chosen plane.kind needs: a complex restriction (julia kinds,
 // basins), a formula z^d + c (mandelbrot), plane.u and plane.v neither zero nor parallel
-// (slice), and a compilable formula. Throws UserError naming the key to change.
+// (slice), and a compilable formula. In the algebras other than the quaternions the complex
+// kinds need a copy span{1, u} of C holding every constant (HypercomplexFormula::complexAxis;
+// they draw the quaternion scene with the same restriction, and name plane.kind where there is
+// none); for the 8-component ones the slice kind's plane lies in the 3D slice of slice.origin
+// and slice.axes, so plane.origin, plane.u and plane.v must have a zero fourth component.
+// Throws UserError naming the key to change.
 void validatePlaneScene(const Scene& scene);
 
 // An upper bound of the memory renderPlane and encodePng of its image take beyond a small fixed

@@ -212,5 +212,106 @@ TEST(PlaneRender, ValidationNamesTheKeyToChange) {
     EXPECT_NO_THROW(validatePlaneScene(scene));
 }
 
+// ---- Other algebras (issue 16) ------------------------------------------------------------
+
+// The pixels drawn as the set (interior colour) of an image.
+std::vector<bool> interiorMask(const Image& image) {
+    std::vector<bool> mask;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            mask.push_back(isInterior(image.at(x, y)));
+    return mask;
+}
+
+TEST(PlaneRender, OctonionSliceInTheQuaternionHalfIsTheQuaternionSlice) {
+    // (a, 0)(c, 0) = (ac, 0): with c in the quaternion half and the default 3D slice (e0, e1,
+    // e2), the plane through 1 and j is the quaternion one: the same set pixel for pixel.
+    Scene quaternion = planeScene("slice", {-0.12, 0.7, 0.1, 0.05}, 64, 48, 1);
+    setParameter(quaternion, "plane.v", std::vector<double>{0, 0, 1, 0});
+    setParameter(quaternion, "plane.origin", std::vector<double>{0, 0.1, 0, 0});
+    setParameter(quaternion, "fractal.bailout", 4.0);
+    Scene octonion = quaternion;
+    setParameter(octonion, "fractal.algebra", std::string("octonion"));
+    setParameter(octonion, "fractal.c", std::vector<double>{-0.12, 0.7, 0.1, 0.05, 0, 0, 0, 0});
+    const std::vector<bool> mask = interiorMask(renderPlane(quaternion).image);
+    EXPECT_EQ(mask, interiorMask(renderPlane(octonion).image));
+    EXPECT_GT(std::count(mask.begin(), mask.end(), true), 64 * 48 / 20);
+    EXPECT_LT(std::count(mask.begin(), mask.end(), true), 64 * 48 / 2);
+}
+
+TEST(PlaneRender, BicomplexAndCoquaternionSlicesOfTheComplexPlaneAreTheComplexJuliaSet) {
+    // i^2 = -1 in both algebras: span{1, i} is a subalgebra equal to C, and with c there the
+    // (1, i) plane is the complex filled Julia set, membership for membership.
+    Scene julia = planeScene("julia", kRabbit, 64, 48, 1);
+    setParameter(julia, "fractal.bailout", 4.0);
+    const std::vector<bool> mask = interiorMask(renderPlane(julia).image);
+    EXPECT_GT(std::count(mask.begin(), mask.end(), true), 64 * 48 / 20);
+    for (const char* algebra : {"bicomplex", "coquaternion"}) {
+        Scene slice = julia;
+        setParameter(slice, "plane.kind", std::string("slice"));
+        setParameter(slice, "fractal.algebra", std::string(algebra));
+        const std::vector<bool> other = interiorMask(renderPlane(slice).image);
+        size_t differ = 0;
+        for (size_t n = 0; n < mask.size(); ++n)
+            differ += mask[n] != other[n];
+        EXPECT_EQ(differ, 0u) << algebra;
+    }
+}
+
+TEST(PlaneRender, EightComponentSlicePlaneFollowsSliceAxes) {
+    // The plane lies in the 3D slice: with slice.axes e0, e1, e6 its third direction is e6.
+    // For octonion z^2 + c with c in span{1, i}, e6 behaves as j does in H (a turn of Im O
+    // fixing i, an automorphism of the orbit), so the (1, e6) plane is the quaternion (1, j) one.
+    Scene quaternion = planeScene("slice", kRabbit, 48, 32, 1);
+    setParameter(quaternion, "plane.v", std::vector<double>{0, 0, 1, 0});
+    setParameter(quaternion, "fractal.bailout", 4.0);
+    Scene octonion = quaternion;
+    setParameter(octonion, "fractal.algebra", std::string("octonion"));
+    setParameter(octonion, "fractal.c",
+                 std::vector<double>{kRabbit[0], kRabbit[1], 0, 0, 0, 0, 0, 0});
+    setParameter(octonion, "slice.axes", std::vector<double>{1, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0,
+                                                             0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0});
+    const std::vector<bool> mask = interiorMask(renderPlane(quaternion).image);
+    EXPECT_EQ(mask, interiorMask(renderPlane(octonion).image));
+    EXPECT_GT(std::count(mask.begin(), mask.end(), true), 48 * 32 / 20);
+}
+
+TEST(PlaneRender, ComplexKindsInOtherAlgebrasNeedACopyOfCHoldingEveryConstant) {
+    // Bicomplex numbers: i^2 = j^2 = -1, k^2 = +1. With c in span{1, i} the julia kinds draw the
+    // quaternion picture of the same complex polynomial; with c = 0.3 + 0.5 j too (span{1, j}).
+    Scene quaternion = planeScene("julia", kRabbit, 32, 24, 1);
+    Scene bicomplex = quaternion;
+    setParameter(bicomplex, "fractal.algebra", std::string("bicomplex"));
+    EXPECT_EQ(renderPlane(quaternion).image.pixels(), renderPlane(bicomplex).image.pixels());
+    setParameter(bicomplex, "fractal.c", std::vector<double>{-0.3, 0, 0.5, 0});
+    EXPECT_NO_THROW(validatePlaneScene(bicomplex));
+    // k*k is +1 here but -1 in H: the constants k lie in no copy of C, so no restriction.
+    setParameter(bicomplex, "fractal.formula", std::string("k*k*z^2 + c"));
+    UserError error = thrownError([&] { validatePlaneScene(bicomplex); });
+    EXPECT_EQ(error.key(), "plane.kind");
+    EXPECT_NE(std::string(error.what()).find("bicomplex"), std::string::npos) << error.what();
+    setParameter(bicomplex, "plane.kind", std::string("mandelbrot"));
+    EXPECT_EQ(thrownError([&] { validatePlaneScene(bicomplex); }).key(), "plane.kind");
+    setParameter(bicomplex, "fractal.formula", std::string("z^2 + c"));
+    setParameter(quaternion, "plane.kind", std::string("mandelbrot"));
+    EXPECT_EQ(renderPlane(quaternion).image.pixels(), renderPlane(bicomplex).image.pixels());
+    // Coquaternions: j^2 = +1, so c = 0.3 + 0.5 j has no restriction; the slice kind draws it.
+    Scene coquaternion = planeScene("basins", {-0.3, 0, 0.5, 0}, 16, 12, 1);
+    setParameter(coquaternion, "fractal.algebra", std::string("coquaternion"));
+    EXPECT_EQ(thrownError([&] { validatePlaneScene(coquaternion); }).key(), "plane.kind");
+    setParameter(coquaternion, "plane.kind", std::string("slice"));
+    EXPECT_NO_THROW(validatePlaneScene(coquaternion));
+    // Octonions: c must lie in the quaternion half; the 8-component plane lies in the 3D slice.
+    Scene octonion = planeScene("julia-boundary", {-0.4, 0.6, 0, 0, 0, 0, 0, 0.1}, 16, 12, 1);
+    setParameter(octonion, "fractal.algebra", std::string("octonion"));
+    EXPECT_EQ(thrownError([&] { validatePlaneScene(octonion); }).key(), "plane.kind");
+    setParameter(octonion, "fractal.c", std::vector<double>{-0.4, 0.6, 0, 0, 0, 0, 0, 0});
+    EXPECT_NO_THROW(validatePlaneScene(octonion));
+    setParameter(octonion, "plane.kind", std::string("slice"));
+    EXPECT_NO_THROW(validatePlaneScene(octonion));
+    setParameter(octonion, "plane.v", std::vector<double>{0, 0, 0, 1});
+    EXPECT_EQ(thrownError([&] { validatePlaneScene(octonion); }).key(), "plane.v");
+}
+
 }  // namespace
 }  // namespace quaternia

@@ -368,7 +368,8 @@ std::vector<Parameter> buildParameterTable() {
                          {"slice", PlaneKind::Slice}},
                         "`quaternia plane` image: filled Julia set K_c (smooth escape colours), "
                         "its boundary J_c, the Mandelbrot set of z^d + c, basins of attraction, "
-                        "or a slice plane.origin + x plane.u + y plane.v through H"),
+                        "or a slice plane.origin + x plane.u + y plane.v through the set (every "
+                        "algebra)"),
         vectorParameter("plane", "center", &S::plane, &P::center, {0, 0}, -1e6, 1e6,
                         "The plane point (x, y) at the image centre; for julia, mandelbrot and "
                         "basins the complex number x + y i"),
@@ -382,7 +383,8 @@ std::vector<Parameter> buildParameterTable() {
                          "Iterations of every plane kind before a point counts as inside (the 3D "
                          "render's fractal.max_iterations is usually far fewer)"),
         vectorParameter("plane", "origin", &S::plane, &P::origin, {0, 0, 0, 0}, -1e6, 1e6,
-                        "Slice kind: the point (1, i, j, k) of H at plane coordinates (0, 0)"),
+                        "Slice kind: the point (1, i, j, k) at plane coordinates (0, 0); for the "
+                        "8-component algebras a point (x, y, z, 0) of the 3D slice"),
         vectorParameter("plane", "u", &S::plane, &P::u, {1, 0, 0, 0}, -1e6, 1e6,
                         "Slice kind: the direction in H of the image's x axis; one plane unit "
                         "is its length"),
