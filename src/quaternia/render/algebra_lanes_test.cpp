@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "quaternia/render/lane_test_helpers.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/parameters.h"
@@ -34,14 +35,7 @@ Scene bicomplexScene(const std::string& formula, const Quaternion& c, double bai
 const char* const kFormulas[] = {"z^2 + c", "z^3 + (0.2+0.1j)*z^2 - 0.1k*z + c"};
 const Quaternion kConstants[] = {Quaternion(-0.2, 0.7, 0.1, 0.05), Quaternion(-0.3, 0.4, 0.1, 0)};
 
-PointBatch randomPoints(int count, double radius, unsigned seed) {
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<double> coordinate(-radius, radius);
-    PointBatch points;
-    for (int i = 0; i < count; ++i)
-        points.push(Point3d(coordinate(random), coordinate(random), coordinate(random)));
-    return points;
-}
+using testing::randomPoints;
 
 TEST(BicomplexLanes, TakenOnlyWhereEveryEscapeIsACertainOne) {
     const Fractal square = Fractal::fromScene(bicomplexScene("z^2 + c", kConstants[0]));

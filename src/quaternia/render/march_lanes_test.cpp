@@ -14,6 +14,7 @@
 
 #include "quaternia/algebra/formula.h"
 #include "quaternia/render/camera.h"
+#include "quaternia/render/lane_test_helpers.h"
 #include "quaternia/render/march.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/test_scenes.h"
@@ -27,14 +28,7 @@ Fractal tiltedFractal() {
     return Fractal::fromScene(scene);
 }
 
-PointBatch randomPoints(int count, double radius, unsigned seed) {
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<double> coordinate(-radius, radius);
-    PointBatch points;
-    for (int i = 0; i < count; ++i)
-        points.push(Point3d(coordinate(random), coordinate(random), coordinate(random)));
-    return points;
-}
+using testing::randomPoints;
 
 TEST(LaneFractal, AffineMapEqualsTheSlice) {
     Fractal fractal = tiltedFractal();

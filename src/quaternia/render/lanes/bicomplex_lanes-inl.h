@@ -168,10 +168,7 @@ HWY_INLINE void estimateBicomplex(D d, const LaneConstants<D>& k,
 template <class D, class V = hn::Vec<D>>
 HWY_INLINE void bicomplexGradient(D d, const LaneConstants<D>& k, V x, V y, V z, V m, int fewest,
                                   int most, V& gx, V& gy, V& gz, LaneCounters& counters) {
-    using T = hn::TFromD<D>;
-    constexpr T kLarge = sizeof(T) == 4 ? T(1e30) : T(1e200);
-    constexpr T kShrink = sizeof(T) == 4 ? T(1e-10) : T(1e-100);
-    const V one = hn::Set(d, T(1));
+    const V one = hn::Set(d, hn::TFromD<D>(1));
     const QuaternionT<V> q = k.quaternionFromWorld(x, y, z);
     V wr[2] = {q.w, q.y}, wi[2] = {q.x, q.z};
     V sr[2] = {one, one}, si[2] = {hn::Zero(d), hn::Zero(d)};
@@ -188,9 +185,8 @@ HWY_INLINE void bicomplexGradient(D d, const LaneConstants<D>& k, V x, V y, V z,
                                 // Only the direction matters: rescale both together.
                                 const V largest = hn::Max(hn::MulAdd(si[0], si[0], sr[0] * sr[0]),
                                                           hn::MulAdd(si[1], si[1], sr[1] * sr[1]));
-                                const auto huge = largest > hn::Set(d, kLarge);
-                                if (!hn::AllFalse(d, huge)) {
-                                    const V factor = hn::IfThenElse(huge, hn::Set(d, kShrink), one);
+                                V factor;
+                                if (tangentShrink(d, largest, factor)) {
                                     for (size_t i = 0; i < 2; ++i)
                                         sr[i] = sr[i] * factor, si[i] = si[i] * factor;
                                 }

@@ -178,23 +178,32 @@ HWY_INLINE void realFormStep(const LaneConstants<D>& k, QuaternionT<V>& z, Quate
          hn::MulAdd(y, z.z, k.c.z)};
 }
 
+// Tangents carried through many Jacobians grow without bound, and only their direction is used:
+// the factor that shrinks them in the lanes whose largest squared tangent passed a threshold
+// near the type's range (1 elsewhere); false, and no factor, where no lane needs it.
+template <class D, class V = hn::Vec<D>>
+HWY_INLINE bool tangentShrink(D d, V largestSquared, V& factor) {
+    using T = hn::TFromD<D>;
+    constexpr T kLarge = sizeof(T) == 4 ? T(1e30) : T(1e200);
+    constexpr T kShrink = sizeof(T) == 4 ? T(1e-10) : T(1e-100);
+    const auto huge = largestSquared > hn::Set(d, kLarge);
+    if (hn::AllFalse(d, huge)) return false;
+    factor = hn::IfThenElse(huge, hn::Set(d, kShrink), hn::Set(d, T(1)));
+    return true;
+}
+
 // potentialNormalLanes' gradient in quaternions, for any s z^d + c or program in float or double:
 // the three tangents of the slice carried through the Jacobian of p at each iterate (the chain
 // rule), and their inner products with z_M.
 template <bool kQuadratic, class D, class V = hn::Vec<D>>
 HWY_INLINE void quaternionGradient(D d, const LaneConstants<D>& k, V x, V y, V z0, V m, int fewest,
                                    int most, V& gx, V& gy, V& gz, LaneCounters& counters) {
-    using T = hn::TFromD<D>;
-    constexpr T kLarge = sizeof(T) == 4 ? T(1e30) : T(1e200);
-    constexpr T kShrink = sizeof(T) == 4 ? T(1e-10) : T(1e-100);
-    const V one = hn::Set(d, T(1));
     // Only the direction matters: rescale all three together before they overflow.
     auto rescale = [&](QuaternionT<V>& t0, QuaternionT<V>& t1, QuaternionT<V>& t2) {
         V largest = hn::Max(normSquaredPairwise(t0),
                             hn::Max(normSquaredPairwise(t1), normSquaredPairwise(t2)));
-        auto huge = largest > hn::Set(d, kLarge);
-        if (!hn::AllFalse(d, huge)) {
-            const V factor = hn::IfThenElse(huge, hn::Set(d, kShrink), one);
+        V factor;
+        if (tangentShrink(d, largest, factor)) {
             t0 = t0 * factor;
             t1 = t1 * factor;
             t2 = t2 * factor;
