@@ -73,8 +73,8 @@ struct LaneFractal {
     static LaneFractal from(const Fractal& fractal, Precision precision);
     // The lanes of a bicomplex polynomial (not functions) whose bailout makes every escape of
     // |q| an escape of one duplex component (bailout^2 >= (R_1^2 + R_2^2) / 2, the default
-    // bailout 4 for z^2 + c with |c| up to about 2): the scalar reference's estimate then never
-    // needs its Lipschitz fallback. Nothing for any other fractal.
+    // bailout 4 for z^2 + c while both duplex components of c have modulus at most 12): the scalar
+    // reference's estimate then never needs its Lipschitz fallback. Nothing for any other fractal.
     static std::optional<LaneFractal> fromBicomplex(const Fractal& fractal, Precision precision);
     // The lanes of an octonion real form (octonion_fold.h; formula as written in the scene),
     // on any slice. Nothing for any other fractal.
