@@ -50,6 +50,21 @@ double continuationRadiusSquared(int degree) {
                     std::pow(largest, 1.0 / std::max(1, degree)));
 }
 
+// The estimate of a point whose orbit passed the bailout B (|z_n|^2 = r2 > B^2) but not the
+// certified escape radius, where a bailout below that radius leaves escape uncertain: the orbit
+// may come back, so the point lies outside K_N (it failed the test at n) but not necessarily
+// far from it, and 0.5 |z| ln|z| / |z'|, the distance to the limit set K = {G = 0} of an orbit
+// that escapes for good, is no bound on the distance to K_N there: near points of K_N whose
+// orbits return it overshot by many times (a set with |c| = 1.39 and bailout 1.69, whose escape
+// radius is 1.80: 0.29 where K_N lay 0.196 ahead). K_N lies in {q : |f^n(q)| <= B}, and to first
+// order a step h changes z_n by at most |z'_n| |h| (|z'_n| bounds the derivative's norm), so
+// the distance to that set is at least (|z_n| - B) / |z'_n| to first order; half of it, as the
+// escaping estimate takes half of G / |grad G|.
+inline double uncertainEscapeDistance(double r2, double bailoutSquared, double derivativeSquared) {
+    return std::max(
+        0.0, 0.5 * (std::sqrt(r2) - std::sqrt(bailoutSquared)) / std::sqrt(derivativeSquared));
+}
+
 // The estimate of a point of K_N whose orbit came no nearer the origin than `trap`.
 inline DistanceEstimate insideEstimate(double trap, int maxIterations) {
     DistanceEstimate result;

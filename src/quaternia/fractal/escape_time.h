@@ -55,8 +55,12 @@ DistanceEstimate estimateWith(const Map& map, const IterationLimits& limits, con
         }
     }
     result.iterations = n + extra;
-    // d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2) ln |z|^2.
-    result.distance = std::max(0.0, 0.25 * std::sqrt(r2 / derivativeSquared) * std::log(r2));
+    if (r2 <= limits.escapeRadiusSquared) {
+        result.distance = uncertainEscapeDistance(r2, limits.bailoutSquared, derivativeSquared);
+    } else {
+        // d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2) ln |z|^2.
+        result.distance = std::max(0.0, 0.25 * std::sqrt(r2 / derivativeSquared) * std::log(r2));
+    }
     result.smoothIteration = smoothEscapeCount(n + extra, r2, limits.degree);
     return result;
 }

@@ -266,6 +266,35 @@ TEST(LaneRender, ConjugatedTermsKeepTheWholeSet) {
     EXPECT_LE(comparison.farFromA + comparison.farFromB, 30) << describe(comparison);
 }
 
+// With a bailout below the escape radius (uncertainEscapeDistance, distance.h) the lanes and
+// their cones draw the near surface the scalar marcher draws. The escaping estimate used to
+// overshoot K_N there, and a cone stopping on it started its whole 4x4 block of rays behind
+// the near surface: square blocks of a deeper layer (several hundred pixels at 192x144).
+TEST(LaneRender, UncertainEscapeDrawsTheScalarPathsNearSurface) {
+    auto scene = [](RenderEngine engine, Precision precision) {
+        Scene s = silhouetteScene("case01_sqr_A", engine, precision);
+        s.render.width = 192;
+        s.render.height = 144;
+        s.camera.position = Point3d(2, 3, -8);
+        s.fractal.formula = "z (0.5+0.1j) z + c";
+        s.fractal.c = {-0.307692, 1.076923, 0.461538, 0.615385};
+        return s;
+    };
+    RenderOptions options;
+    options.depth = true;
+    const RenderResult reference = render(scene(RenderEngine::Scalar, Precision::Double), options);
+    ASSERT_GT(reference.stats.hits, 2000);
+    for (Precision precision : {Precision::Single, Precision::Double}) {
+        const RenderResult lanes = render(scene(RenderEngine::Simd, precision), options);
+        const auto& a = lanes.depth.pixels();
+        const auto& b = reference.depth.pixels();
+        int deeper = 0;
+        for (size_t i = 0; i < a.size(); ++i)
+            deeper += a[i] < 1 && b[i] < 1 && std::abs(a[i] - b[i]) > 0.02;
+        EXPECT_LE(deeper, reference.stats.hits / 100) << "pixels at another depth";
+    }
+}
+
 // Formulas that are not s z^d + c, and the fixed-step marcher, take the scalar path.
 TEST(LaneRender, EveryFormulaTakesTheLanesAndFixedStepTheScalarPath) {
     Scene scene = testing::referenceScene("case01_sqr_A");

@@ -210,6 +210,18 @@ struct EstimateGroup {
         result.inside = inside;
         result.distance =
             hn::IfThenZeroElse(inside, closingDistance(d, radiusSquared, derivative, k.stepScale));
+        if (!k.certified) {
+            // Lanes stopped by a bailout below the escape radius: uncertainEscapeDistance
+            // (distance.h), in the iterate's scale times |z| / |w|.
+            const V r2Stopped = hn::IfThenElse(unfinished, r2, stopRadiusSquared);
+            const auto uncertain = hn::AndNot(inside, r2Stopped <= k.escapeRadiusSquared);
+            const V linear =
+                hn::Max(hn::Zero(d), hn::Sqrt(r2Stopped) - hn::Sqrt(k.bailoutSquared)) /
+                hn::Sqrt(derivative);
+            result.distance = hn::IfThenElse(
+                uncertain, hn::Set(d, hn::TFromD<D>(0.5)) * linear * k.normScale * k.stepScale,
+                result.distance);
+        }
         result.trapSquared = trap * k.normSquaredScale;
         result.iterations = hn::IfThenElse(inside, k.maxIterations, stopIteration);
         result.radiusSquared = radiusSquared;

@@ -21,6 +21,7 @@ struct LaneConstants {
     V scale, bailoutSquared, escapeRadiusSquared, estimateRadiusSquared, stepScale, maxIterations;
     V gainFactor;        // 4 s^2 for d = 2, s^2 d^2 otherwise
     V normSquaredScale;  // LaneFractal::normSquaredScale: |z|^2 from the iterate's |w|^2
+    V normScale;         // its square root, |z| / |w|
     // The float loop of s z^2 + c in u = 2 s z (estimateThreeNumbers): the slice map times 2 s,
     // 2 s c (complex there: scaledC + scaledCi i), the radii squared times 4 s^2, and 1 / (4 s^2).
     QuaternionT<V> loopOrigin, loopAxis0, loopAxis1, loopAxis2;
@@ -110,6 +111,7 @@ struct LaneConstants {
         maxIterations = hn::Set(d, T(f.maxIterations));
         gainFactor = hn::Set(d, T(f.scale * f.scale * f.degree * f.degree));
         normSquaredScale = hn::Set(d, T(f.normSquaredScale));
+        normScale = hn::Set(d, T(std::sqrt(f.normSquaredScale)));
         const double fourScaleSquared = 4 * f.scale * f.scale;
         loopOrigin = lanes(f.origin, 2 * f.scale);
         loopAxis0 = lanes(f.axes[0], 2 * f.scale);
