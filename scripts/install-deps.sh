@@ -8,6 +8,7 @@ packages=(
   libpng-dev zlib1g-dev libtomlplusplus-dev libcli11-dev libhwy-dev
   libgtest-dev libbenchmark-dev
   nlohmann-json3-dev
+  libopenexr-dev openexr
   ffmpeg
   admesh
   openmpi-bin libopenmpi-dev

@@ -8,10 +8,12 @@
 #include "cmd/mpi_commands.h"
 #include "cmd/mpi_work.h"
 #include "cmd/poster.h"
+#include "cmd/render_command.h"
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/util/atomic_file.h"
+#include "quaternia/util/error.h"
 
 namespace quaternia {
 namespace {
@@ -88,6 +90,10 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
         scene = sceneFromOptions(options);
         validateScene(scene);
         Fractal::fromScene(scene);
+        // The bands travel and are assembled as PNG rows; EXR's passes are quaternia render's.
+        if (isExrPath(options.output))
+            throw UserError("-o", "-o: quaternia-mpi writes PNG; write " + options.output +
+                                      " with quaternia render");
         requireImageMemory(
             scene,
             posterMemoryBytes(PosterLayout(scene.render.width, scene.render.height),

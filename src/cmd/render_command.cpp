@@ -1,8 +1,11 @@
 #include "cmd/render_command.h"
 
+#include <cctype>
 #include <cstdio>
 
 #include "quaternia/fractal/fractal.h"
+#include "quaternia/image/png_io.h"
+#include "quaternia/render/render_exr.h"
 #include "quaternia/render/render_png.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
@@ -48,10 +51,49 @@ void printRenderSummary(const RenderCommandOptions& options, const Scene& scene,
     std::fprintf(stream, "%s\n", jsonText(json).c_str());
 }
 
+bool isExrPath(const std::string& path) {
+    if (path.size() < 4) return false;
+    std::string suffix = path.substr(path.size() - 4);
+    for (char& ch : suffix)
+        ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    return suffix == ".exr";
+}
+
+namespace {
+
+// The render as OpenEXR, and the depth pass as a PNG where --depth asks for one too.
+int renderExr(const RenderCommandOptions& options, const Scene& scene) {
+    AtomicFile output(options.output);
+    std::optional<AtomicFile> depthOutput;
+    if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);
+    std::optional<RenderResult> result;
+    const bool completed = runInterruptibly("rendering", options, [&](const WorkOptions& work) {
+        RenderOptions renderOptions;
+        static_cast<WorkOptions&>(renderOptions) = work;
+        renderOptions.depth = depthOutput.has_value();
+        renderOptions.passes = true;
+        result = render(scene, renderOptions);
+        return result->completed;
+    });
+    if (!completed) return reportInterrupted();
+    output.write(encodeRenderExr(result->passes));
+    output.commit();
+    if (depthOutput) {
+        depthOutput->write(encodeGrayPng16(result->depth));
+        depthOutput->commit();
+    }
+    printRenderSummary(options, scene, result->stats);
+    return 0;
+}
+
+}  // namespace
+
 void addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
     CLI::App* render = app.add_subcommand("render", "Render a quaternion Julia set to a PNG");
-    addSceneOptions(*render, options,
-                    "Output PNG (RGBA, alpha = coverage; RGB when every pixel is opaque)");
+    addSceneOptions(
+        *render, options,
+        "Output PNG (RGBA, alpha = coverage; RGB when every pixel is opaque), or OpenEXR where the "
+        "name ends in .exr: linear colour, alpha and passes Z, N, trap, id");
     render->add_option("--depth", options.depthOutput,
                        "Also write a 16-bit grey depth pass to this PNG");
     render->footer(sceneHelpFooter());
@@ -63,8 +105,12 @@ int runRenderCommand(const RenderCommandOptions& options) {
     // outputs can be written (a temporary file beside each, renamed over it at the end).
     validateScene(scene);
     Fractal::fromScene(scene);
-    requireImageMemory(scene, renderPngMemoryBytes(scene, !options.depthOutput.empty()), options,
-                       "the render");
+    const bool exr = isExrPath(options.output);
+    requireImageMemory(scene,
+                       (exr ? renderExrMemoryBytes(scene) : 0) +
+                           renderPngMemoryBytes(scene, !options.depthOutput.empty()),
+                       options, "the render");
+    if (exr) return renderExr(options, scene);
     AtomicFile output(options.output);
     std::optional<AtomicFile> depthOutput;
     if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);

@@ -24,4 +24,8 @@ void addRenderCommand(CLI::App& app, RenderCommandOptions& options);
 // Renders and writes the files; returns the process exit code. Throws UserError on bad input.
 int runRenderCommand(const RenderCommandOptions& options);
 
+// Whether an output path names an OpenEXR file (*.exr, any case): `render` then writes the
+// linear colour and passes (render_exr.h).
+bool isExrPath(const std::string& path);
+
 }  // namespace quaternia

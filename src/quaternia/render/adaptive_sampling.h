@@ -26,10 +26,13 @@ namespace quaternia {
 
 // The samples of one pixel, summed.
 struct PixelSamples {
-    Color sum;
+    Color sum = Color();
     double depthSum = 0;
     int hits = 0;
     int samples = 0;  // taken
+    // Of the hit samples, for the passes (RenderOptions::passes): world normals and orbit traps.
+    Vector3d normalSum = Vector3d();
+    double trapSum = 0;
 };
 
 // The order in which a pixel takes its n samples and how many it takes at each step.

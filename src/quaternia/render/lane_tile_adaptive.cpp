@@ -36,7 +36,7 @@ void LaneTileRenderer::renderAdaptive(const Tile& tile, std::vector<PixelSamples
     const int regionWidth = region.x1 - region.x0;
     constexpr int first = AdaptiveSampling::kFirst;
     firstPass_.assign(size_t(regionWidth) * size_t(region.y1 - region.y0),
-                      PixelSamples{Color(), 0, 0, first});
+                      PixelSamples{.samples = first});
     stats.rays += int64_t(first) * int64_t(firstPass_.size());
     const bool cylinders = shadowCylinders_;
     shadowCylinders_ = false;
@@ -134,6 +134,10 @@ void LaneTileRenderer::traceInto(std::vector<PixelSamples>& pixels, LaneTileStat
         pixel.sum += sample;
         pixel.depthSum += hits_[h].t;
         ++pixel.hits;
+        if (passes_) {
+            pixel.normalSum += normals_[h];
+            pixel.trapSum += hitEstimates_[h].trap;
+        }
         if (tracking_) {
             float& deviation = deviation_[size_t(hits_[h].pixel)];
             deviation = std::max(

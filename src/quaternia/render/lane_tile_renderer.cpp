@@ -93,7 +93,7 @@ void LaneTileRenderer::renderUniform(const Tile& tile, std::vector<PixelSamples>
     const int width = tile.x1 - tile.x0;
     tileBlocks_ =
         (width + kConeBlock - 1) / kConeBlock * ((tile.y1 - tile.y0 + kConeBlock - 1) / kConeBlock);
-    pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{Color(), 0, 0, samples_});
+    pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{.samples = samples_});
     stats.rays += int64_t(samples_) * int64_t(pixels.size());
     marchCones(tile, stats);
     for (int k = 0; k < samples_; ++k) {
@@ -287,6 +287,8 @@ void LaneTileRenderer::hitNormals(LaneTileStats& stats) {
         potentialNormals(lanes_, hitPoints_, gradientIterations_, normals_, stats.shading);
     } else {
         potentialNormalsAlone(lanes_, hitPoints_, normals_, stats.shading);
+        // The trap pass wants the orbits the colouring did not (the normals stay as above).
+        if (passes_) estimatePoints(lanes_, hitPoints_, hitEstimates_, stats.shading);
     }
     for (size_t h = 0; h < count; ++h) {
         Vector3d& n = normals_[h];

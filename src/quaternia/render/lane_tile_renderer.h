@@ -37,6 +37,8 @@ class LaneTileRenderer {
     // make (shadowCylinders stays).
     void rebind(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
                 const MarchSettings& march, int samples, bool adaptive = false);
+    // Whether the pixels also sum their hits' normals and orbit traps (RenderOptions::passes).
+    void setPasses(bool passes) { passes_ = passes; }
 
     // Marches and shades the samples of every pixel of the tile (all of them, or adaptively);
     // pixels[(y - y0) * width + (x - x0)] receives the sums of pixel (x, y).
@@ -112,6 +114,7 @@ class LaneTileRenderer {
     int samples_;
     bool shadowCylinders_;
     bool adaptive_;
+    bool passes_ = false;                  // setPasses
     std::vector<PixelSamples> firstPass_;  // adaptive: the first samples of the tile's region
     std::vector<uint8_t> refine_;
     std::vector<Rgba> firstDisplay_;

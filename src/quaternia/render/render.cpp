@@ -80,6 +80,17 @@ RenderResult emptyResult(const RenderSettings& settings, const RenderOptions& op
         result.image = Image(width, height);
     }
     if (options.depth) result.depth = GrayImage(width, height);
+    if (options.passes) {
+        RenderPasses& p = result.passes;
+        const size_t count = size_t(width) * size_t(height);
+        p.width = width;
+        p.height = height;
+        p.linear.assign(count, Rgba{});
+        p.distance.assign(count, RenderPasses::kNoHitDistance);
+        p.trap.assign(count, 0.0f);
+        p.normal.assign(count, {0.0f, 0.0f, 0.0f});
+        p.object.assign(count, 0);
+    }
     return result;
 }
 
@@ -163,6 +174,7 @@ class FrameRenderer {
     const bool adaptive_;  // adaptive sampling (adaptive_sampling.h): render.adaptive, samples > 1
     const bool opaque_;    // render.alpha = "opaque"
     const bool depth_;     // RenderOptions::depth
+    const bool passes_;    // RenderOptions::passes
     const double depthNear_, depthRange_;
     // The SIMD path where the formula and marcher allow it (march_lanes.h).
     std::optional<LaneFractal> lanes_;
@@ -192,6 +204,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
       adaptive_(scene.render.adaptive && scene.render.samples > 1),
       opaque_(scene.render.alpha == AlphaMode::Opaque),
       depth_(options.depth),
+      passes_(options.passes),
       depthNear_(std::max(0.0, length(scene.camera.position) - fractal_.boundingRadius())),
       depthRange_(length(scene.camera.position) + fractal_.boundingRadius() - depthNear_),
       uniformBackground_(scene.shading.backgroundTop == scene.shading.backgroundBottom),
@@ -236,7 +249,23 @@ Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
         double depth = hits > 0 ? (pixel.depthSum / hits - depthNear_) / depthRange_ : 1;
         result_.depth.at(px - windowX0_, py - windowY0_) = float(std::clamp(depth, 0.0, 1.0));
     }
-    return Rgba{float(color.x), float(color.y), float(color.z), float(coverage)};
+    const Rgba linear{float(color.x), float(color.y), float(color.z), float(coverage)};
+    if (passes_) {
+        RenderPasses& p = result_.passes;
+        const size_t i = size_t(py - windowY0_) * size_t(p.width) + size_t(px - windowX0_);
+        p.linear[i] = linear;
+        if (hits > 0) {
+            p.distance[i] = float(pixel.depthSum / hits);
+            p.trap[i] = float(pixel.trapSum / hits);
+            const double n = length(pixel.normalSum);
+            if (n > 0) {
+                const Vector3d unit = pixel.normalSum / n;
+                p.normal[i] = {float(unit.x), float(unit.y), float(unit.z)};
+            }
+            p.object[i] = 1;
+        }
+    }
+    return linear;
 }
 
 // The scalar path: sample k of the pixel marched and shaded on its own, added to its sums.
@@ -251,10 +280,13 @@ std::optional<Color> FrameRenderer::addSample(int px, int py, int k, PixelSample
     ++pixel.samples;
     if (!marched.hit) return std::nullopt;
     ++pixel.hits;
+    SurfaceSample surface;
     const Color colour =
-        shader_.shade(*marched.hit, ray, camera_.pixelFootprint(marched.hit->t), shading);
+        shader_.shade(*marched.hit, ray, camera_.pixelFootprint(marched.hit->t), shading, &surface);
     pixel.sum += colour;
     pixel.depthSum += marched.hit->t;
+    pixel.normalSum += surface.normal;
+    pixel.trapSum += marched.hit->estimate.trap;
     return colour;
 }
 
@@ -346,8 +378,10 @@ void FrameRenderer::renderTileInLanes(const Tile& tile, ThreadTotals& thread) co
     if (!thread.laneTiles) {
         thread.laneTiles = std::make_unique<LaneTileRenderer>(*lanes_, camera_, shader_, march_,
                                                               samples_, true, adaptive_);
+        thread.laneTiles->setPasses(passes_);
     } else if (!thread.laneTilesBound) {
         thread.laneTiles->rebind(*lanes_, camera_, shader_, march_, samples_, adaptive_);
+        thread.laneTiles->setPasses(passes_);
     }
     thread.laneTilesBound = true;
     LaneTileStats tileStats;
@@ -369,7 +403,7 @@ void FrameRenderer::finishRowsOnUniformBackground(const Tile& tile, ThreadTotals
         Rgba* row = rows_.row(thread, tile, py);
         for (int i = 0; i < width;) {
             if (pixel[i].hits == 0) {
-                if (depth_) finishPixel(tile.x0 + i, py, pixel[i], backgroundColor_);
+                if (depth_ || passes_) finishPixel(tile.x0 + i, py, pixel[i], backgroundColor_);
                 row[i++] = backgroundDisplay_;
                 continue;
             }
@@ -396,7 +430,7 @@ void FrameRenderer::finishRowsOnBackgroundRows(const Tile& tile, ThreadTotals& t
         shader_.backgroundRow(directions.first, directions.step, tile.x0, width,
                               opaque_ ? 1.0f : 0.0f, row);
         for (int i = 0; i < width; ++i, ++pixel) {
-            if (pixel->hits == 0 && !depth_) continue;
+            if (pixel->hits == 0 && !depth_ && !passes_) continue;
             thread.stats.hits += pixel->hits;
             row[i] = finishPixel(tile.x0 + i, py, *pixel, Color(row[i].r, row[i].g, row[i].b));
         }

@@ -38,6 +38,7 @@ class RenderWorkspace {
 struct RenderOptions : WorkOptions {
     RenderWorkspace* workspace = nullptr;  // none: render() makes its scratch for the call
     bool depth = false;                    // also fill RenderResult::depth
+    bool passes = false;                   // also fill RenderResult::passes (for EXR)
     // Where render.alpha is "opaque": fill RenderResult::samples instead of the image, each
     // row quantised as soon as its tile has it (while it is in cache), as encodePng would.
     bool opaqueSamples = false;
@@ -80,6 +81,21 @@ struct RenderStats {
     }
 };
 
+// Passes for compositing (RenderOptions::passes), each width x height, row-major. linear: the
+// colour before exposure and gamma with alpha as RenderResult::image has it (straight); of the
+// hit samples, distance: the mean distance from the camera along the ray (kNoHitDistance where
+// none hit, as Blender writes its Z pass), normal: the mean world normal made unit (0 where none
+// hit), trap: the mean orbit trap min |z_n| (0 where none hit); object: 1 where a sample hit the
+// set, 0 else.
+struct RenderPasses {
+    static constexpr float kNoHitDistance = 1e10f;
+    int width = 0, height = 0;
+    std::vector<Rgba> linear;
+    std::vector<float> distance, trap;
+    std::vector<std::array<float, 3>> normal;
+    std::vector<uint32_t> object;
+};
+
 struct RenderResult {
     // Display values (exposure and gamma applied). With render.alpha = "coverage", alpha is the
     // fraction of a pixel's samples that hit and colour the mean of the hit samples (straight
@@ -89,6 +105,7 @@ struct RenderResult {
     // Depth pass when asked for: the mean hit distance scaled so that 0 is the near side of the
     // bounding sphere and 1 its far side; 1 where nothing was hit.
     GrayImage depth;
+    RenderPasses passes;  // with RenderOptions::passes
     // With RenderOptions::opaqueSamples and render.alpha = "opaque", in place of `image` (which
     // stays empty): its RGB samples at the scene's bit depth, as PNG stores them (png_writer.h),
     // the very samples that encodePng(image, bitDepth, true) writes. A quarter of the memory

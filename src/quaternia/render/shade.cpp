@@ -147,7 +147,8 @@ Color Shader::albedo(const DistanceEstimate& estimate) const {
     }
 }
 
-Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats) const {
+Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats,
+                    SurfaceSample* surface) const {
     SurfaceSample sample;
     sample.normal = fractal_.normal(hit.outside);
     if (dot(sample.normal, ray.direction) > 0) sample.normal = -sample.normal;  // a thin sheet
@@ -159,6 +160,7 @@ Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingSta
         occlusionEnabled()
             ? ambientFromOpenness(ambientOcclusion(hit.outside, sample.normal, stats))
             : 1;
+    if (surface) *surface = sample;
     return light(sample, ray);
 }
 

@@ -36,7 +36,9 @@ class Shader {
 
     // Linear colour of the surface at `hit`, seen along `ray`. `footprint` is the pixel
     // footprint at the hit, the scale of the offsets that leave the surface.
-    Color shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats) const;
+    // `surface`, where given, receives the normal, albedo, visibility and occlusion it used.
+    Color shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats,
+                SurfaceSample* surface = nullptr) const;
     // The background seen along a ray that misses: a vertical gradient.
     Color background(const Ray& ray) const;
     // background() for the pixel centres px = x0 .. x0 + count - 1 of one camera row
