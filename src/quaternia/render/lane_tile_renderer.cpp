@@ -299,13 +299,17 @@ void LaneTileRenderer::hitNormals(LaneTileStats& stats) {
 void LaneTileRenderer::aimShadowRays() {
     shadowRays_.clear();
     shadowHit_.clear();
+    keyLights_.resize(hits_.size());
     for (size_t h = 0; h < hits_.size(); ++h) {
         const Vector3d& n = normals_[h];
-        if (shader_->shadows() == Shadows::None || !(shader_->keyDiffuse(n) > 0)) continue;
+        const KeyLight& key = keyLights_[h] = shader_->keyLight(hits_[h].outside);
+        if (shader_->shadows() == Shadows::None || !(Shader::keyDiffuse(n, key) > 0)) continue;
         Point3d origin =
             shader_->shadowOrigin(hits_[h].outside, n, camera_->pixelFootprint(hits_[h].t));
-        Ray ray{origin, shader_->lightDirection()};
-        auto interval = intersectSphere(ray, boundingRadius_);
+        Ray ray{origin, key.toLight};
+        // (A point light's distance from the shadow origin, which lies a little off the surface.)
+        auto interval = shader_->shadowInterval(
+            ray, shader_->keyLightIsDirectional() ? key : shader_->keyLight(origin));
         if (!interval) continue;
         shadowRays_.push(ray, 0, interval->tFar);
         shadowHit_.push_back(int(h));
@@ -313,7 +317,8 @@ void LaneTileRenderer::aimShadowRays() {
 }
 
 void LaneTileRenderer::marchShadowRays(LaneTileStats& stats) {
-    if (shadowCylinders_ && shader_->shadows() == Shadows::Hard) {
+    if (shadowCylinders_ && shader_->shadows() == Shadows::Hard &&
+        shader_->keyLightIsDirectional()) {
         clipShadowRays(stats);
     } else {
         shadowClear_.clear();  // none cleared (a batch with cylinders may have left flags)
@@ -344,8 +349,9 @@ void LaneTileRenderer::sampleSurfaces() {
         const Vector3d& n = normals_[h];
         const Vector3d& direction = hits_[h].direction;
         const Color albedo = albedoOf(*shader_, lanes_, orbit ? &hitEstimates_[h] : nullptr);
+        const KeyLight& key = keyLights_[h];
         double visibility = 1;  // no shadows, or the shadow ray leaves the bounding sphere
-        if (!(shader_->keyDiffuse(n) > 0)) {
+        if (!(Shader::keyDiffuse(n, key) > 0)) {
             visibility = 0;
         } else if (nextShadow < shadowHit_.size() && shadowHit_[nextShadow] == int(h)) {
             visibility = shader_->visibilityFromMarch(shadowVisibility_[nextShadow++]);
@@ -358,6 +364,9 @@ void LaneTileRenderer::sampleSurfaces() {
         SurfaceBatch& s = surfaces_;
         s.nx[h] = float(n.x), s.ny[h] = float(n.y), s.nz[h] = float(n.z);
         s.dx[h] = float(direction.x), s.dy[h] = float(direction.y), s.dz[h] = float(direction.z);
+        s.lx[h] = float(key.toLight.x), s.ly[h] = float(key.toLight.y),
+        s.lz[h] = float(key.toLight.z);
+        s.keyScale[h] = float(key.scale);
         s.albedoR[h] = float(albedo.x), s.albedoG[h] = float(albedo.y),
         s.albedoB[h] = float(albedo.z);
         s.visibility[h] = float(visibility);

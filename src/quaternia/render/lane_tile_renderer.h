@@ -115,6 +115,7 @@ class LaneTileRenderer {
     bool shadowCylinders_;
     bool adaptive_;
     bool passes_ = false;                  // setPasses
+    std::vector<KeyLight> keyLights_;      // the key light at each hit (aimShadowRays)
     std::vector<PixelSamples> firstPass_;  // adaptive: the first samples of the tile's region
     std::vector<uint8_t> refine_;
     std::vector<Rgba> firstDisplay_;

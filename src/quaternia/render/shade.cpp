@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "quaternia/render/lanes/shading_lanes.h"
 
@@ -23,6 +24,11 @@ Shader::Shader(const ShadingSettings& settings, const Fractal& fractal)
       fractal_(fractal),
       lightDirection_(normalize(settings.lightDirection)),
       fillDirection_(normalize(settings.fillDirection)),
+      spotAxis_(settings.lightKind == LightKind::Spot
+                    ? normalize(settings.spotTarget - settings.lightPosition)
+                    : Vector3d(0, 0, 1)),
+      spotCosOuter_(std::cos(settings.spotAngle * M_PI / 180)),
+      spotCosInner_(std::cos(settings.spotAngle * (1 - settings.spotSoftness) * M_PI / 180)),
       // Occlusion is probed over a few percent of the object's size: the scale of its folds.
       occlusionStep_(0.025 * fractal.boundingRadius()),
       highlightCutoff_(std::pow(1e-7, 1 / std::max(settings.shininess, 1e-3))) {
@@ -46,10 +52,45 @@ double Shader::visibilityFromMarch(double marched) const {
     return settings_.shadows == Shadows::Soft ? smoothstep(0, 1, marched) : marched;
 }
 
-double Shader::shadow(const Point3d& p, ShadingStats& stats) const {
-    if (settings_.shadows == Shadows::None) return 1;
-    Ray ray{p, lightDirection_};
+KeyLight Shader::keyLight(const Point3d& x) const {
+    KeyLight key;
+    if (settings_.lightKind == LightKind::Directional) {
+        key.toLight = lightDirection_;
+        key.scale = settings_.lightIntensity;
+        key.distance = std::numeric_limits<double>::infinity();
+        return key;
+    }
+    // A point light's irradiance falls with the inverse square of the distance.
+    const Vector3d toLight = settings_.lightPosition - x;
+    key.distance = length(toLight);
+    key.toLight = toLight / key.distance;
+    key.scale = settings_.lightIntensity / (key.distance * key.distance);
+    if (settings_.lightKind == LightKind::Spot) {
+        // Full within the inner cone, dark beyond the outer, a smoothstep between.
+        const double cosine = -dot(key.toLight, spotAxis_);
+        key.scale *= cosine >= spotCosInner_   ? 1
+                     : cosine <= spotCosOuter_ ? 0
+                                               : smoothstep(spotCosOuter_, spotCosInner_, cosine);
+    }
+    return key;
+}
+
+std::optional<RayInterval> Shader::shadowInterval(const Ray& ray, const KeyLight& key) const {
     auto interval = intersectSphere(ray, fractal_.boundingRadius());
+    if (!interval) return std::nullopt;
+    interval->tFar = std::min(interval->tFar, key.distance);
+    if (!(interval->tNear < interval->tFar)) return std::nullopt;
+    return interval;
+}
+
+double Shader::shadow(const Point3d& p, const KeyLight& key, ShadingStats& stats) const {
+    if (settings_.shadows == Shadows::None) return 1;
+    // (From the shadow origin, which lies a little off the surface: its own distance.)
+    Ray ray{p, key.toLight};
+    const KeyLight fromHere{
+        key.toLight, key.scale,
+        keyLightIsDirectional() ? key.distance : length(settings_.lightPosition - p)};
+    auto interval = shadowInterval(ray, fromHere);
     if (!interval) return 1;
     if (fractal_.distanceKind() == DistanceKind::kLipschitz)
         return lipschitzShadow(ray, *interval, stats);
@@ -153,9 +194,13 @@ Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingSta
     sample.normal = fractal_.normal(hit.outside);
     if (dot(sample.normal, ray.direction) > 0) sample.normal = -sample.normal;  // a thin sheet
     sample.albedo = albedo(hit.estimate);
-    sample.visibility = keyDiffuse(sample.normal) > 0
-                            ? shadow(shadowOrigin(hit.outside, sample.normal, footprint), stats)
-                            : 0;
+    const KeyLight key = keyLight(hit.outside);
+    sample.toLight = key.toLight;
+    sample.keyScale = key.scale;
+    sample.visibility =
+        keyDiffuse(sample.normal, key) > 0
+            ? shadow(shadowOrigin(hit.outside, sample.normal, footprint), key, stats)
+            : 0;
     sample.occlusion =
         occlusionEnabled()
             ? ambientFromOpenness(ambientOcclusion(hit.outside, sample.normal, stats))
@@ -166,8 +211,8 @@ Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingSta
 
 Color Shader::light(const SurfaceSample& sample, const Ray& ray) const {
     const Vector3d& n = sample.normal;
-    const double key = keyDiffuse(n);
-    Vector3d halfway = normalize(lightDirection_ - ray.direction);
+    const double key = std::max(0.0, dot(n, sample.toLight)) * sample.keyScale;
+    Vector3d halfway = normalize(sample.toLight - ray.direction);
     const double cosine = dot(n, halfway);
     double highlight = key > 0 && cosine > highlightCutoff_
                            ? std::pow(float(cosine), float(settings_.shininess))
@@ -176,7 +221,8 @@ Color Shader::light(const SurfaceSample& sample, const Ray& ray) const {
 
     const Color& base = sample.albedo;
     Color color = base * settings_.lightColor * (key * sample.visibility);
-    color += settings_.lightColor * (settings_.specular * highlight * sample.visibility);
+    color += settings_.lightColor *
+             (settings_.specular * highlight * sample.keyScale * sample.visibility);
     color += base * settings_.fillColor * (fillDiffuse * sample.occlusion);
     color += base * (settings_.ambient * sample.occlusion);
     return color;
@@ -187,7 +233,6 @@ LightConstants Shader::lightConstants() const {
         out[0] = float(v.x), out[1] = float(v.y), out[2] = float(v.z);
     };
     LightConstants k;
-    put(k.light, lightDirection_);
     put(k.fill, fillDirection_);
     put(k.lightColor, settings_.lightColor);
     put(k.fillColor, settings_.fillColor);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/image/image.h"
@@ -24,10 +25,21 @@ struct ShadingStats {
 // What lighting a hit needs beyond its position: the scalar path computes these ray by ray, the
 // SIMD path (lane_tile_renderer.h) in batches; both light them with Shader::light.
 struct SurfaceSample {
-    Vector3d normal;  // unit, facing the viewer
+    Vector3d normal;      // unit, facing the viewer
+    Vector3d toLight;     // unit, towards the key light (Shader::keyLight)
+    double keyScale = 1;  // the key light's factor there (Shader::keyLight)
     Color albedo;
     double visibility = 1;  // of the key light, after the penumbra's smoothstep
     double occlusion = 1;   // ambient light reaching the point, ambient occlusion applied
+};
+
+// The key light as a point of the surface sees it (Shader::keyLight): the unit direction
+// towards it, the factor on its colour (intensity; over distance squared for point and spot
+// lights, times the spot's cone), and how far it is (infinite for a directional light).
+struct KeyLight {
+    Vector3d toLight;
+    double scale = 1;
+    double distance = 0;
 };
 
 class Shader {
@@ -45,8 +57,11 @@ class Shader {
     // (Camera::rowDirections), in float, with the given alpha: a loop the compiler vectorises.
     void backgroundRow(const Vector3d& first, const Vector3d& step, int x0, int count, float alpha,
                        Rgba* out) const;
-    // Visibility of the key light from p in [0, 1] (1 = lit).
-    double shadow(const Point3d& p, ShadingStats& stats) const;
+    // Visibility of the key light from p in [0, 1] (1 = lit), the light as p sees it.
+    double shadow(const Point3d& p, const KeyLight& key, ShadingStats& stats) const;
+    // How far a shadow ray from p towards the key light goes: to the light, or to the far side
+    // of the set's bounding sphere if that is nearer (nothing when it misses the sphere).
+    std::optional<RayInterval> shadowInterval(const Ray& ray, const KeyLight& key) const;
     // shadow() for sets whose distance is a Lipschitz bound (Fractal::distanceKind): hard.
     double lipschitzShadow(const Ray& ray, const RayInterval& interval, ShadingStats& stats) const;
     // 1 = open, 0 = fully occluded.
@@ -57,10 +72,14 @@ class Shader {
     // Whether albedo() reads the estimate at all (a solid colour does not).
     bool albedoUsesOrbit() const { return settings_.coloring != Coloring::Solid; }
 
-    // The pieces both paths share. The key light's diffuse term (0 where it does not reach the
-    // front of the surface, and no shadow ray is needed).
-    double keyDiffuse(const Vector3d& normal) const {
-        return std::max(0.0, dot(normal, lightDirection_));
+    // The pieces both paths share. The key light at point x.
+    KeyLight keyLight(const Point3d& x) const;
+    // Whether the key light's shadows are rays towards a direction (parallel rays).
+    bool keyLightIsDirectional() const { return settings_.lightKind == LightKind::Directional; }
+    // The key light's diffuse term (0 where it does not reach the front of the surface, and no
+    // shadow ray is needed).
+    static double keyDiffuse(const Vector3d& normal, const KeyLight& key) {
+        return key.scale > 0 ? std::max(0.0, dot(normal, key.toLight)) : 0.0;
     }
     // Where the shadow ray starts: a few footprints off the surface so that it does not hit the
     // surface it leaves.
@@ -71,6 +90,7 @@ class Shader {
     Shadows shadows() const { return settings_.shadows; }
     double shadowMinimumStep() const;
     double shadowSoftness() const { return settings_.shadowSoftness; }
+    // A directional key light's direction (keyLightIsDirectional()).
     const Vector3d& lightDirection() const { return lightDirection_; }
     // Shadow rays: at most kShadowSteps estimates, over-relaxed steps (shadow()).
     static constexpr int kShadowSteps = 256;
@@ -110,6 +130,8 @@ class Shader {
     ShadingSettings settings_;
     const Fractal& fractal_;
     Vector3d lightDirection_, fillDirection_;
+    Vector3d spotAxis_;                   // unit, from a spot light towards its target
+    double spotCosOuter_, spotCosInner_;  // the cone's edge: dark beyond outer, full within inner
     double occlusionStep_;
     // occlusionFromEstimates' factors: 2 / height and the normalised weight of each sample.
     std::array<double, kOcclusionSamples> occlusionScale_, occlusionWeight_;

@@ -74,8 +74,8 @@ TEST(Shader, ShadowOfTheUnitBall) {
         ball.scene.shading.shadows = mode;
         Shader shader(ball.scene.shading, ball.fractal);
         ShadingStats stats;
-        EXPECT_EQ(shader.shadow({0, -1.05, 0}, stats), 0);
-        EXPECT_EQ(shader.shadow({0, 1.05, 0}, stats), 1);
+        EXPECT_EQ(shader.shadow({0, -1.05, 0}, shader.keyLight({0, -1.05, 0}), stats), 0);
+        EXPECT_EQ(shader.shadow({0, 1.05, 0}, shader.keyLight({0, 1.05, 0}), stats), 1);
         EXPECT_GT(stats.estimates, 0);
     }
     // Grazing past the ball's edge: a penumbra between the two. With bailout 2 the bounding
@@ -86,11 +86,12 @@ TEST(Shader, ShadowOfTheUnitBall) {
     ball.scene.shading.shadows = Shadows::Soft;
     Shader soft(ball.scene.shading, ball.fractal);
     ShadingStats stats;
-    double penumbra = soft.shadow({1.02, -1.0, 0}, stats);
+    double penumbra = soft.shadow({1.02, -1.0, 0}, soft.keyLight({1.02, -1.0, 0}), stats);
     EXPECT_GT(penumbra, 0);
     EXPECT_LT(penumbra, 1);
     ball.scene.shading.shadows = Shadows::None;
-    EXPECT_EQ(Shader(ball.scene.shading, ball.fractal).shadow({0, -1.05, 0}, stats), 1);
+    const Shader unshadowed(ball.scene.shading, ball.fractal);
+    EXPECT_EQ(unshadowed.shadow({0, -1.05, 0}, unshadowed.keyLight({0, -1.05, 0}), stats), 1);
 }
 
 // On the convex unit ball nothing occludes the open side.

@@ -77,6 +77,12 @@ TEST(ShadingLanes, LightingMatchesTheShaderOnEveryTarget) {
                 sample.albedo = Color(unit(random), unit(random), unit(random));
                 sample.visibility = unit(random);
                 sample.occlusion = unit(random);
+                // A key light as a point light gives it: any unit direction and factor.
+                sample.toLight = i % 4 == 0 ? shader.lightDirection() : randomDirection();
+                sample.keyScale = i % 4 == 0 ? 1 : 2 * unit(random);
+                batch.lx[i] = float(sample.toLight.x), batch.ly[i] = float(sample.toLight.y);
+                batch.lz[i] = float(sample.toLight.z);
+                batch.keyScale[i] = float(sample.keyScale);
                 batch.nx[i] = float(sample.normal.x), batch.ny[i] = float(sample.normal.y);
                 batch.nz[i] = float(sample.normal.z);
                 batch.dx[i] = float(directions[i].x), batch.dy[i] = float(directions[i].y);

@@ -313,11 +313,32 @@ std::vector<Parameter> buildParameterTable() {
                         "PNG alpha: coverage (the fraction of samples that hit, background "
                         "transparent) or opaque (composited over the background gradient)"),
         // [shading]
+        choiceParameter("shading", "light_kind", &S::shading, &H::lightKind, "directional",
+                        {{"directional", LightKind::Directional},
+                         {"point", LightKind::Point},
+                         {"spot", LightKind::Spot}},
+                        "The key light: directional (from light_direction, infinitely far), point "
+                        "(at light_position, falling off with the inverse square of the distance) "
+                        "or spot (a point light shining into a cone towards spot_target)"),
         vectorParameter("shading", "light_direction", &S::shading, &H::lightDirection,
                         {-0.5, 0.8, -0.6}, -1e3, 1e3,
-                        "Direction towards the key light in world space; any length"),
+                        "Direction towards a directional key light in world space; any length"),
+        vectorParameter("shading", "light_position", &S::shading, &H::lightPosition,
+                        {-3.0, 5.0, -6.0}, -1e3, 1e3,
+                        "Position of a point or spot key light in world space"),
         vectorParameter("shading", "light_color", &S::shading, &H::lightColor, {1.0, 0.92, 0.8}, 0,
-                        100, "Linear RGB colour and intensity of the key light"),
+                        100, "Linear RGB colour of the key light"),
+        realParameter("shading", "light_intensity", &S::shading, &H::lightIntensity, 1, 0, 1e6,
+                      "Multiplies light_color; a point or spot light gives light_color x "
+                      "intensity / distance^2 (at distance 8, 64 matches a directional light of "
+                      "intensity 1)"),
+        vectorParameter("shading", "spot_target", &S::shading, &H::spotTarget, {0.0, 0.0, 0.0},
+                        -1e3, 1e3, "The point a spot key light aims at"),
+        realParameter("shading", "spot_angle", &S::shading, &H::spotAngle, 25, 0.1, 90,
+                      "Half-angle of a spot light's cone in degrees"),
+        realParameter("shading", "spot_softness", &S::shading, &H::spotSoftness, 0.2, 0, 1,
+                      "Fraction of spot_angle over which the spot's edge fades out; 0 is a hard "
+                      "edge"),
         choiceParameter("shading", "shadows", &S::shading, &H::shadows, "soft",
                         {{"soft", Shadows::Soft}, {"hard", Shadows::Hard}, {"none", Shadows::None}},
                         "Shadows of the key light: soft (distance-estimate penumbrae), hard or "

@@ -587,6 +587,11 @@ void validateScene(const Scene& scene) {
     const ShadingSettings& shading = scene.shading;
     if (dot(shading.lightDirection, shading.lightDirection) == 0)
         throw UserError("shading.light_direction", "shading.light_direction must not be zero");
+    if (shading.lightKind == LightKind::Spot &&
+        dot(shading.spotTarget - shading.lightPosition,
+            shading.spotTarget - shading.lightPosition) == 0)
+        throw UserError("shading.spot_target",
+                        "shading.spot_target must differ from shading.light_position");
     if (dot(shading.fillDirection, shading.fillDirection) == 0)
         throw UserError("shading.fill_direction", "shading.fill_direction must not be zero");
 

@@ -61,7 +61,7 @@ ParameterValue alternativeValue(const Parameter& p) {
 
 TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
     const auto& table = parameterTable();
-    EXPECT_EQ(table.size(), 70u);  // every field of Scene (scene.h) but the animation keys
+    EXPECT_EQ(table.size(), 76u);  // every field of Scene (scene.h) but the animation keys
     std::set<std::string> names;
     for (const auto& p : table) {
         EXPECT_TRUE(names.insert(p.name()).second) << p.name() << " is declared twice";
@@ -322,7 +322,7 @@ TEST(ParameterNearestName, SuggestsTheClosestName) {
     EXPECT_EQ(nearestParameterName("camera.lookat"), "camera.look_at");
     // Within a known section its own keys come first, and a typed beginning counts.
     EXPECT_EQ(nearestParameterName("fractal.max_iter"), "fractal.max_iterations");
-    EXPECT_EQ(nearestParameterName("shading.light"), "shading.light_direction");
+    EXPECT_EQ(nearestParameterName("shading.light"), "shading.light_kind");
     EXPECT_EQ(nearestParameterName("render.sample"), "render.samples");
     // A key of another section: "shading.width" is nearer "shading.gamma" letter by letter.
     EXPECT_EQ(nearestParameterName("shading.width"), "render.width");

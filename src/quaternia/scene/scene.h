@@ -91,11 +91,19 @@ struct RenderSettings {
 };
 
 enum class Shadows { None, Hard, Soft };
+// The key light: a direction (infinitely far), a point, or a point shining into a cone.
+enum class LightKind { Directional, Point, Spot };
 enum class Coloring { OrbitTrap, Iteration, Solid };
 
 struct ShadingSettings {
-    Vector3d lightDirection;  // towards the key light, world space
+    LightKind lightKind = LightKind::Directional;
+    Vector3d lightDirection;  // towards a directional key light, world space
+    Vector3d lightPosition;   // of a point or spot key light, world space
     Color lightColor;
+    double lightIntensity = 0;  // times lightColor; point and spot: over distance squared
+    Vector3d spotTarget;        // where a spot light points
+    double spotAngle = 0;       // half-angle of the spot's cone, degrees
+    double spotSoftness = 0;    // fraction of spotAngle over which its edge fades
     Shadows shadows = Shadows::Soft;
     double shadowSoftness = 0;  // penumbra sharpness k of DE soft shadows (bigger = harder)
     Vector3d fillDirection;

@@ -54,16 +54,15 @@ void LightSurfaceLanes(const LightConstants& k, SurfaceBatch& surfaces) {
     const V zero = hn::Zero(d), tiny = set(1e-30f);
     auto light = [&](size_t i, auto load, auto store) {
         const V nx = load(surfaces.nx, i), ny = load(surfaces.ny, i), nz = load(surfaces.nz, i);
-        const V key = hn::Max(
-            zero,
-            hn::MulAdd(nz, set(k.light[2]), hn::MulAdd(ny, set(k.light[1]), nx * set(k.light[0]))));
+        const V lx = load(surfaces.lx, i), ly = load(surfaces.ly, i), lz = load(surfaces.lz, i);
+        const V keyScale = load(surfaces.keyScale, i);
+        const V key = hn::Max(zero, hn::MulAdd(nz, lz, hn::MulAdd(ny, ly, nx * lx))) * keyScale;
         const V fill = hn::Max(
             zero,
             hn::MulAdd(nz, set(k.fill[2]), hn::MulAdd(ny, set(k.fill[1]), nx * set(k.fill[0]))));
         // The highlight: cos^shininess of the angle between the normal and the halfway vector.
-        const V hx = set(k.light[0]) - load(surfaces.dx, i),
-                hy = set(k.light[1]) - load(surfaces.dy, i),
-                hz = set(k.light[2]) - load(surfaces.dz, i);
+        const V hx = lx - load(surfaces.dx, i), hy = ly - load(surfaces.dy, i),
+                hz = lz - load(surfaces.dz, i);
         const V cosine = hn::MulAdd(nz, hz, hn::MulAdd(ny, hy, nx * hx)) /
                          hn::Sqrt(hn::MulAdd(hz, hz, hn::MulAdd(hy, hy, hx * hx)));
         const auto shines = hn::And(key > zero, cosine > set(k.highlightCutoff));
@@ -71,7 +70,7 @@ void LightSurfaceLanes(const LightConstants& k, SurfaceBatch& surfaces) {
             shines, hn::Exp(d, set(k.shininess) * hn::Log(d, hn::Max(cosine, tiny))));
         const V visibility = load(surfaces.visibility, i), occlusion = load(surfaces.occlusion, i);
         const V direct = key * visibility;
-        const V shine = set(k.specular) * highlight * visibility;
+        const V shine = set(k.specular) * highlight * keyScale * visibility;
         const V fillLevel = fill * occlusion, ambientLevel = set(k.ambient) * occlusion;
         auto channel = [&](const std::vector<float>& albedo, int c) {
             const V base = load(albedo, i);
@@ -120,8 +119,8 @@ HWY_EXPORT(EncodeDisplay);
 HWY_EXPORT(LightSurfaceLanes);
 
 void SurfaceBatch::resize(size_t n) {
-    for (auto* v : {&nx, &ny, &nz, &dx, &dy, &dz, &albedoR, &albedoG, &albedoB, &visibility,
-                    &occlusion, &red, &green, &blue})
+    for (auto* v : {&nx, &ny, &nz, &dx, &dy, &dz, &lx, &ly, &lz, &keyScale, &albedoR, &albedoG,
+                    &albedoB, &visibility, &occlusion, &red, &green, &blue})
         v->resize(n);
 }
 void lightSurfaces(const LightConstants& constants, SurfaceBatch& surfaces) {

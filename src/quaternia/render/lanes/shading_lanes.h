@@ -16,7 +16,7 @@ void encodeDisplay(float* rgba, size_t pixels, float exposure, float inverseGamm
 // Shader::light for many surface samples in float lanes: the inputs as structure of arrays, the
 // lit colours into red, green and blue. The constants are the Shader's (Shader::lightConstants).
 struct LightConstants {
-    float light[3], fill[3];  // unit directions towards the key and fill lights
+    float fill[3];  // unit direction towards the fill light
     float lightColor[3], fillColor[3];
     float specular, shininess, ambient;
     float highlightCutoff;  // below this cosine the highlight counts as 0
@@ -24,6 +24,8 @@ struct LightConstants {
 struct SurfaceBatch {
     std::vector<float> nx, ny, nz;  // unit normals facing the viewer
     std::vector<float> dx, dy, dz;  // unit view ray directions
+    std::vector<float> lx, ly, lz;  // unit directions towards the key light (Shader::keyLight)
+    std::vector<float> keyScale;    // the key light's factor (Shader::keyLight)
     std::vector<float> albedoR, albedoG, albedoB, visibility, occlusion;
     std::vector<float> red, green, blue;  // the results
     void resize(size_t n);
