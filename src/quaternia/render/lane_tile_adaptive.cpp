@@ -130,7 +130,8 @@ void LaneTileRenderer::traceInto(std::vector<PixelSamples>& pixels, LaneTileStat
     shadeHits(stats);
     for (size_t h = 0; h < hits_.size(); ++h) {
         PixelSamples& pixel = pixels[size_t(hits_[h].pixel)];
-        const Color sample(surfaces_.red[h], surfaces_.green[h], surfaces_.blue[h]);
+        const Color sample = shader_->throughFog(
+            Color(surfaces_.red[h], surfaces_.green[h], surfaces_.blue[h]), hits_[h].t);
         pixel.sum += sample;
         pixel.depthSum += hits_[h].t;
         ++pixel.hits;

@@ -1,6 +1,7 @@
 // Point and spot key lights (shading.light_kind) against the geometry of the unit ball, the set
 // of z^2 + 0, lit by the key light alone (no ambient, fill or highlight; white; gamma 1): each
-// pixel shows max(0, n . L) I / d^2 at the ball's point on its ray, in both engines.
+// pixel shows max(0, n . L) I / d^2 at the ball's point on its ray, in both engines. And fog
+// (shading.fog_density): Beer-Lambert attenuation over each hit's distance.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -128,6 +129,39 @@ TEST(KeyLight, SpotLightsOnlyItsCone) {
         }
         EXPECT_GT(inside, 200);
         EXPECT_GT(outside, 200);
+    }
+}
+
+// Fog of density 0.3: each hit pixel's linear colour is the fogless one times exp(-0.3 t) plus
+// the fog colour times the rest, t its distance (the passes give both); the background, at
+// infinity, is the fog colour.
+TEST(Fog, AttenuatesByBeerLambertOverTheDistance) {
+    for (RenderEngine engine : {RenderEngine::Simd, RenderEngine::Scalar}) {
+        Scene scene = litBall(engine, {1.5, 1.0, -2.5}, 3);
+        scene.shading.ambient = 0.1;
+        RenderOptions options;
+        options.passes = true;
+        const RenderResult clear = render(scene, options);
+        const Color fog(0.2, 0.4, 0.6);
+        scene.shading.fogDensity = 0.3;
+        scene.shading.fogColor = fog;
+        const RenderResult foggy = render(scene, options);
+        int hits = 0;
+        for (size_t i = 0; i < clear.passes.linear.size(); ++i) {
+            const Rgba& a = clear.passes.linear[i];
+            const Rgba& b = foggy.passes.linear[i];
+            if (clear.passes.object[i] == 0) {
+                EXPECT_NEAR(b.r, fog.x, 1e-6);
+                EXPECT_NEAR(b.b, fog.z, 1e-6);
+                continue;
+            }
+            ++hits;
+            const double kept = std::exp(-0.3 * clear.passes.distance[i]);
+            EXPECT_NEAR(b.r, a.r * kept + fog.x * (1 - kept), 1e-5) << i;
+            EXPECT_NEAR(b.g, a.g * kept + fog.y * (1 - kept), 1e-5) << i;
+            EXPECT_NEAR(b.b, a.b * kept + fog.z * (1 - kept), 1e-5) << i;
+        }
+        EXPECT_GT(hits, 1000);
     }
 }
 

@@ -207,10 +207,9 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
       passes_(options.passes),
       depthNear_(std::max(0.0, length(scene.camera.position) - fractal_.boundingRadius())),
       depthRange_(length(scene.camera.position) + fractal_.boundingRadius() - depthNear_),
-      uniformBackground_(scene.shading.backgroundTop == scene.shading.backgroundBottom),
-      backgroundColor_(float(scene.shading.backgroundBottom.x),
-                       float(scene.shading.backgroundBottom.y),
-                       float(scene.shading.backgroundBottom.z)),
+      uniformBackground_(shader_.backgroundTop() == shader_.backgroundBottom()),
+      backgroundColor_(float(shader_.backgroundBottom().x), float(shader_.backgroundBottom().y),
+                       float(shader_.backgroundBottom().z)),
       backgroundDisplay_{float(backgroundColor_.x), float(backgroundColor_.y),
                          float(backgroundColor_.z), opaque_ ? 1.0f : 0.0f},
       windowX0_(window.x0),
@@ -281,8 +280,9 @@ std::optional<Color> FrameRenderer::addSample(int px, int py, int k, PixelSample
     if (!marched.hit) return std::nullopt;
     ++pixel.hits;
     SurfaceSample surface;
-    const Color colour =
-        shader_.shade(*marched.hit, ray, camera_.pixelFootprint(marched.hit->t), shading, &surface);
+    const Color colour = shader_.throughFog(
+        shader_.shade(*marched.hit, ray, camera_.pixelFootprint(marched.hit->t), shading, &surface),
+        marched.hit->t);
     pixel.sum += colour;
     pixel.depthSum += marched.hit->t;
     pixel.normalSum += surface.normal;

@@ -32,6 +32,9 @@ Shader::Shader(const ShadingSettings& settings, const Fractal& fractal)
       // Occlusion is probed over a few percent of the object's size: the scale of its folds.
       occlusionStep_(0.025 * fractal.boundingRadius()),
       highlightCutoff_(std::pow(1e-7, 1 / std::max(settings.shininess, 1e-3))) {
+    // Infinitely far, the background is all fog.
+    if (settings_.fogDensity > 0)
+        settings_.backgroundTop = settings_.backgroundBottom = settings_.fogColor;
     // Weights 0.7^(k-1), normalised.
     double weight = 1, weights = 0;
     for (int k = 1; k <= kOcclusionSamples; ++k) {

@@ -51,8 +51,18 @@ class Shader {
     // `surface`, where given, receives the normal, albedo, visibility and occlusion it used.
     Color shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats,
                 SurfaceSample* surface = nullptr) const;
-    // The background seen along a ray that misses: a vertical gradient.
+    // The background seen along a ray that misses: a vertical gradient (the fog colour where
+    // there is fog: backgroundTop() and backgroundBottom() are then the fog's).
     Color background(const Ray& ray) const;
+    const Color& backgroundTop() const { return settings_.backgroundTop; }
+    const Color& backgroundBottom() const { return settings_.backgroundBottom; }
+    // Light of colour c from distance t seen through the fog (Beer-Lambert: exp(-density t) of
+    // it, the rest the fog's colour); c itself without fog.
+    Color throughFog(const Color& c, double t) const {
+        if (!(settings_.fogDensity > 0)) return c;
+        const double kept = std::exp(-settings_.fogDensity * t);
+        return c * kept + settings_.fogColor * (1 - kept);
+    }
     // background() for the pixel centres px = x0 .. x0 + count - 1 of one camera row
     // (Camera::rowDirections), in float, with the given alpha: a loop the compiler vectorises.
     void backgroundRow(const Vector3d& first, const Vector3d& step, int x0, int count, float alpha,

@@ -376,6 +376,12 @@ std::vector<Parameter> buildParameterTable() {
         vectorParameter("shading", "background_bottom", &S::shading, &H::backgroundBottom,
                         {0.002, 0.002, 0.004}, 0, 100,
                         "Linear RGB background at the bottom of the image"),
+        realParameter("shading", "fog_density", &S::shading, &H::fogDensity, 0, 0, 1000,
+                      "Uniform fog per unit of distance: light from distance t keeps exp(-density "
+                      "t) of its colour and takes the rest from fog_color, and the background, "
+                      "infinitely far, is fog_color; 0 is no fog"),
+        vectorParameter("shading", "fog_color", &S::shading, &H::fogColor, {0.5, 0.55, 0.6}, 0, 100,
+                        "Linear RGB colour of the fog"),
         realParameter("shading", "gamma", &S::shading, &H::gamma, 2.2, 0.1, 10,
                       "Display gamma of the encoded image (2.2 is close to sRGB)"),
         realParameter("shading", "exposure", &S::shading, &H::exposure, 1, 0, 100,

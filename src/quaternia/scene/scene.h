@@ -115,6 +115,8 @@ struct ShadingSettings {
     Coloring coloring = Coloring::OrbitTrap;
     Color baseColor, accentColor;
     Color backgroundTop, backgroundBottom;
+    Color fogColor;
+    double fogDensity = 0;  // per unit of distance; 0: no fog
     double gamma = 0;
     double exposure = 0;
 };
