@@ -26,6 +26,13 @@ class Camera {
         double y0 = 0.5 - y / height_;
         return Ray{position_, normalize(direction_ + right_ * x0 + up_ * y0)};
     }
+    // The thin lens's ray (camera.aperture) through the image point (x, y) from lens point `lens`
+    // of the unit square (mapped onto the lens's disc, lensPoint): from that point of the lens
+    // to where the pinhole ray meets the plane in focus, so that every lens point sees that
+    // plane alike and nearer and farther points blur. The pinhole ray where the aperture is 0.
+    Ray generateRay(double x, double y, const std::array<double, 2>& lens) const;
+    // Whether the camera is a thin lens of nonzero aperture.
+    bool thinLens() const { return aperture_ > 0; }
     // The unnormalised directions of the pixel centres of row py: first + px * step for pixel
     // px (generateRay's direction before normalisation), for work done a row at a time.
     struct RowDirections {
@@ -51,6 +58,12 @@ class Camera {
     Vector3d right_, up_, direction_;  // R, U, D above
     int width_, height_;
     double pixelAngle_;
+    double aperture_, focusDistance_;  // the thin lens (CameraSettings)
+    Vector3d forward_;                 // unit view axis
 };
+
+// A point of the unit disc from one of the unit square, area kept (Shirley and Chiu's concentric
+// map, 1997: squares to rings, so that stratified samples stay stratified on the lens).
+std::array<double, 2> lensPoint(const std::array<double, 2>& square);
 
 }  // namespace quaternia

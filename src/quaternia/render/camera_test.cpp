@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
+#include "quaternia/render/render.h"
+#include "quaternia/scene/test_scenes.h"
+
 namespace quaternia {
 namespace {
 
@@ -61,6 +66,88 @@ TEST(Camera, ProjectInvertsGenerateRay) {
         EXPECT_NEAR((*projected)[1], y, 1e-9);
     }
     EXPECT_FALSE(camera.project(Point3d(1, 1.5, -4) - Point3d(0, 0, 1)).has_value());
+}
+
+}  // namespace
+}  // namespace quaternia
+
+namespace quaternia {
+namespace {
+
+// The thin lens (camera.aperture): every lens ray of an image point passes through the point
+// where the pinhole ray meets the plane in focus (focus_distance along the view axis), and
+// leaves from within the lens's disc, which lies across the view axis.
+TEST(ThinLens, LensRaysMeetOnThePlaneInFocus) {
+    CameraSettings settings{{1, 2, -5}, {0, 0, 0}, {0, 1, 0}, 40, 0.5, 3.5};
+    const Camera camera(settings, 64, 48);
+    const Vector3d forward = normalize(settings.lookAt - settings.position);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int i = 0; i < 200; ++i) {
+        const double x = 64 * unit(rng), y = 48 * unit(rng);
+        const Ray pinhole = camera.generateRay(x, y);
+        const Point3d focus = pinhole.at(3.5 / dot(pinhole.direction, forward));
+        const Ray lens = camera.generateRay(x, y, {unit(rng), unit(rng)});
+        const Vector3d offset = lens.origin - settings.position;
+        EXPECT_LE(length(offset), 0.25 + 1e-12);
+        EXPECT_NEAR(dot(offset, forward), 0, 1e-12);
+        const Vector3d toFocus = focus - lens.origin;
+        EXPECT_NEAR(length(toFocus - lens.direction * dot(toFocus, lens.direction)), 0, 1e-9);
+    }
+    settings.aperture = 0;
+    const Camera pinholeCamera(settings, 64, 48);
+    const Ray a = pinholeCamera.generateRay(10, 20, {0.9, 0.1});
+    const Ray b = pinholeCamera.generateRay(10, 20);
+    EXPECT_EQ(a.origin, b.origin);
+    EXPECT_EQ(a.direction, b.direction);
+}
+
+// The concentric map keeps area: as many of a grid's points fall in the inner disc of radius
+// 1/sqrt(2) as outside it, and none beyond the unit circle.
+TEST(ThinLens, LensPointKeepsArea) {
+    int inner = 0, all = 0;
+    for (int i = 0; i < 100; ++i) {
+        for (int j = 0; j < 100; ++j) {
+            const auto [u, v] = lensPoint({(i + 0.5) / 100, (j + 0.5) / 100});
+            const double r2 = u * u + v * v;
+            EXPECT_LE(r2, 1 + 1e-12);
+            inner += r2 < 0.5;
+            ++all;
+        }
+    }
+    EXPECT_NEAR(inner, all / 2, all / 100);
+}
+
+// Depth of field on the unit ball seen from 4 units away: focused on its outline (whose points
+// lie sqrt(15) away) the outline stays sharp; focused at 2 units it blurs into the circle of
+// confusion, aperture |d - T| / d on the plane in focus: 0.2 x 1.87 / 3.87 = 0.097, 4.7 pixels
+// there. The pixels of partial coverage along the centre row measure the blur's width.
+TEST(ThinLens, OutlineBlursByTheCircleOfConfusion) {
+    for (RenderEngine engine : {RenderEngine::Simd, RenderEngine::Scalar}) {
+        auto blurredPixels = [&](double focus) {
+            Scene scene = testing::unitBallScene(81, 81);
+            scene.camera.position = {0, 0, -4};
+            scene.camera.aperture = 0.2;
+            scene.camera.focusDistance = focus;
+            scene.render.samples = 64;
+            scene.render.engine = engine;
+            scene.shading.shadows = Shadows::None;
+            scene.shading.ambientOcclusion = 0;
+            const RenderResult result = render(scene);
+            int partial = 0;
+            for (int px = 0; px < 81; ++px) {
+                const float alpha = result.image.at(px, 40).a;
+                partial += alpha > 0.05f && alpha < 0.95f;
+            }
+            return partial;
+        };
+        const int sharp = blurredPixels(std::sqrt(15.0));
+        const int blurred = blurredPixels(2);
+        EXPECT_LE(sharp, 4);  // both sides of the ball
+        // 4.7 pixels a side less the 5% at either end of the ramp: 4 to 5 of them.
+        EXPECT_GE(blurred, 2 * 3);
+        EXPECT_LE(blurred, 2 * 6);
+    }
 }
 
 }  // namespace

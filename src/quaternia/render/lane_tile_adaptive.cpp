@@ -111,13 +111,13 @@ void LaneTileRenderer::pushSampleRay(const Tile& blocks, int px, int py, int k, 
     const double start = blockStart_[size_t(block)];
     if (start == std::numeric_limits<double>::infinity()) return;  // cone missed
     auto [sx, sy] = samplePosition(k, samples_, px, py);
-    const Ray ray = camera_->generateRay(px + sx, py + sy);
+    const Ray ray = camera_->generateRay(px + sx, py + sy, lensSample(k, px, py));
     auto interval = intersectSphere(ray, boundingRadius_);
     const double tNear = interval ? interval->tNear : 1;
     const double tFar = interval ? interval->tFar : -1;  // none: tNear > tFar
     const double near = std::max(tNear, start);
     if (!(near <= tFar)) return;
-    rays_.push(Ray{camera_->position(), ray.direction}, near, tFar);
+    rays_.push(ray, near, tFar);
     rayPixel_.push_back(target);
     rayBlock_.push_back(block);
 }

@@ -117,7 +117,7 @@ void LaneTileRenderer::sampleRays(const Tile& tile, int k) {
             })) {
             continue;
         }
-        if (samples_ == 1) {
+        if (samples_ == 1 && !camera_->thinLens()) {
             rowRays(tile, py, blockRow);
         } else {
             sampleRowRays(tile, py, k);
@@ -130,8 +130,9 @@ void LaneTileRenderer::sampleRowRays(const Tile& tile, int py, int k) {
     rowRays_.resize(size_t(tile.x1 - tile.x0));
     for (int px = tile.x0; px < tile.x1; ++px) {
         auto [sx, sy] = samplePosition(k, samples_, px, py);
-        const Ray ray = camera_->generateRay(px + sx, py + sy);
+        const Ray ray = camera_->generateRay(px + sx, py + sy, lensSample(k, px, py));
         RowRay& r = rowRays_[size_t(px - tile.x0)];
+        r.origin = ray.origin;
         r.direction = ray.direction;
         auto interval = intersectSphere(ray, boundingRadius_);
         r.tNear = interval ? interval->tNear : 1;
@@ -150,7 +151,7 @@ void LaneTileRenderer::pushRowRays(const Tile& tile, int py, const double* block
         const double near = std::max(r.tNear, start);
         // Not r.tNear <= r.tFar: the sphere missed, or the cone found nothing on it.
         if (!(near <= r.tFar)) continue;
-        rays_.push(Ray{camera_->position(), r.direction}, near, r.tFar);
+        rays_.push(Ray{r.origin, r.direction}, near, r.tFar);
         rayPixel_.push_back((py - tile.y0) * width + (px - tile.x0));
         rayBlock_.push_back(rowBlock + column);
     }
@@ -199,6 +200,7 @@ void LaneTileRenderer::rowRays(const Tile& tile, int py, const double* blockStar
             const double discriminant = b * b - c;
             const double root = std::sqrt(std::max(0.0, discriminant));
             const double tFar = -b + root;
+            out[i].origin = o;
             out[i].direction = d;
             out[i].tNear = std::max(0.0, -b - root);
             // A miss (no real root, or the sphere behind the camera) as an empty interval.
@@ -212,6 +214,9 @@ void LaneTileRenderer::marchCones(const Tile& tile, LaneTileStats& stats) {
     const int across = (width + kConeBlock - 1) / kConeBlock;
     const int down = (height + kConeBlock - 1) / kConeBlock;
     blockStart_.assign(size_t(across * down), 0.0);
+    // A thin lens's rays leave from all over the lens: no cone from the pinhole holds them, so
+    // each starts where it enters the bounding sphere.
+    if (camera_->thinLens()) return;
     cones_.clear();
     coneBlock_.clear();
     std::vector<Ray>& centres = coneCentres_;

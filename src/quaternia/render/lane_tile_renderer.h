@@ -139,6 +139,7 @@ class LaneTileRenderer {
     // A row of the tile's rays (from the camera), and where each is inside the bounding sphere
     // (tNear > tFar where it misses).
     struct RowRay {
+        Point3d origin;  // the camera's position, or a point of its thin lens
         Vector3d direction;
         double tNear, tFar;
     };

@@ -271,7 +271,7 @@ Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
 std::optional<Color> FrameRenderer::addSample(int px, int py, int k, PixelSamples& pixel,
                                               RenderStats& stats, ShadingStats& shading) const {
     auto [sx, sy] = samplePosition(k, samples_, px, py);
-    Ray ray = camera_.generateRay(px + sx, py + sy);
+    Ray ray = camera_.generateRay(px + sx, py + sy, lensSample(k, px, py));
     MarchResult marched = march(fractal_, ray, march_);
     stats.marchSteps += marched.steps;
     stats.iterations += marched.iterations;
@@ -457,6 +457,15 @@ std::array<double, 2> samplePosition(int k, int n, int px, int py) {
         hashPixel(uint32_t(px) * 73856093u ^ uint32_t(py) * 19349663u ^ uint32_t(k) * 83492791u);
     double jx = unitFromHash(h), jy = unitFromHash(hashPixel(h));
     return {(k % columns + jx) / columns, (k / columns + jy) / rows};
+}
+
+std::array<double, 2> lensSample(int k, int px, int py) {
+    // R2: k / plastic and k / plastic^2, plastic^3 = plastic + 1 (Roberts 2018).
+    constexpr double a1 = 0.7548776662466927, a2 = 0.5698402909980532;
+    const uint32_t h = hashPixel(uint32_t(px) * 2654435761u ^ uint32_t(py) * 40503u ^ 0x9e3779b9u);
+    const double ox = unitFromHash(h), oy = unitFromHash(hashPixel(h));
+    auto wrap = [](double v) { return v - std::floor(v); };
+    return {wrap(ox + a1 * k), wrap(oy + a2 * k)};
 }
 
 ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int height) {

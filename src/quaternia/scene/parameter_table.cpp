@@ -266,6 +266,14 @@ std::vector<Parameter> buildParameterTable() {
         vectorParameter("camera", "up", &S::camera, &C::up, {0, 1, 0}, -1e4, 1e4,
                         "Sky vector, the image's up direction; must not be parallel to the view "
                         "direction"),
+        realParameter("camera", "aperture", &S::camera, &C::aperture, 0, 0, 100,
+                      "Depth of field: diameter of a thin lens in world units; points off the "
+                      "focal plane blur into discs of aperture x |depth - focus| / depth (seen "
+                      "on the focal plane); 0 is a pinhole, everything sharp. Takes its lens "
+                      "samples from render.samples"),
+        realParameter("camera", "focus_distance", &S::camera, &C::focusDistance, 0, 0, 1e4,
+                      "Distance from the camera to the plane in focus, along the view axis; 0 "
+                      "focuses on look_at"),
         realParameter("camera", "fov", &S::camera, &C::fovDegrees, 45, 0.01, 179,
                       "Horizontal field of view in degrees"),
         // [render]

@@ -58,8 +58,10 @@ struct SliceSettings {
 
 struct CameraSettings {
     Point3d position, lookAt;
-    Vector3d up;            // POV-Ray's sky vector
-    double fovDegrees = 0;  // horizontal field of view
+    Vector3d up;               // POV-Ray's sky vector
+    double fovDegrees = 0;     // horizontal field of view
+    double aperture = 0;       // thin lens diameter, world units; 0: a pinhole
+    double focusDistance = 0;  // to the plane in focus, along the view axis; 0: to look_at
 };
 
 enum class MarchMethod { SphereTracing, FixedStep };
