@@ -312,9 +312,7 @@ void LaneTileRenderer::aimShadowRays() {
         Point3d origin =
             shader_->shadowOrigin(hits_[h].outside, n, camera_->pixelFootprint(hits_[h].t));
         Ray ray{origin, key.toLight};
-        // (A point light's distance from the shadow origin, which lies a little off the surface.)
-        auto interval = shader_->shadowInterval(
-            ray, shader_->keyLightIsDirectional() ? key : shader_->keyLight(origin));
+        auto interval = shader_->shadowInterval(ray, key);
         if (!interval) continue;
         shadowRays_.push(ray, 0, interval->tFar);
         shadowHit_.push_back(int(h));

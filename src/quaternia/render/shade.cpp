@@ -81,19 +81,19 @@ KeyLight Shader::keyLight(const Point3d& x) const {
 std::optional<RayInterval> Shader::shadowInterval(const Ray& ray, const KeyLight& key) const {
     auto interval = intersectSphere(ray, fractal_.boundingRadius());
     if (!interval) return std::nullopt;
-    interval->tFar = std::min(interval->tFar, key.distance);
+    // A point light's distance from the ray's own origin (a shadow origin lies a little off the
+    // surface point the key light was taken at).
+    const double toLight =
+        keyLightIsDirectional() ? key.distance : length(settings_.lightPosition - ray.origin);
+    interval->tFar = std::min(interval->tFar, toLight);
     if (!(interval->tNear < interval->tFar)) return std::nullopt;
     return interval;
 }
 
 double Shader::shadow(const Point3d& p, const KeyLight& key, ShadingStats& stats) const {
     if (settings_.shadows == Shadows::None) return 1;
-    // (From the shadow origin, which lies a little off the surface: its own distance.)
     Ray ray{p, key.toLight};
-    const KeyLight fromHere{
-        key.toLight, key.scale,
-        keyLightIsDirectional() ? key.distance : length(settings_.lightPosition - p)};
-    auto interval = shadowInterval(ray, fromHere);
+    auto interval = shadowInterval(ray, key);
     if (!interval) return 1;
     if (fractal_.distanceKind() == DistanceKind::kLipschitz)
         return lipschitzShadow(ray, *interval, stats);
