@@ -6,7 +6,10 @@
 // here, so that the page plays what `quaternia animate` renders.
 import { sameValue, tomlValue } from './controls.js';
 
-const ANIMATED_SECTIONS = new Set(['fractal', 'slice', 'camera', 'shading']);
+const ANIMATED_SECTIONS = new Set([
+  'fractal', 'slice', 'camera', 'shading', 'light1', 'light2', 'light3', 'light4', 'light5', 'light6',
+  'light7', 'material', 'ground',
+]);
 const NUMERIC_TYPES =
   new Set(['real', 'integer', 'vector2', 'vector3', 'vector4', 'vector6', 'components']);
 const MAX_KEYS = 64;  // ExploreLimits::maxAnimationKeys

@@ -160,7 +160,7 @@ Mesh weld(std::vector<BlockMesh>& blocks) {
 // The renderer's look at each vertex: its analytic normal and its orbit colour (shade.h).
 bool addNormalsAndColors(const Scene& scene, const Fractal& fractal, Mesh& mesh,
                          const MeshOptions& options, MeshStats& stats) {
-    Shader shader(scene.shading, fractal);
+    Shader shader(scene.shading, fractal, scene.lights);
     mesh.normals.resize(mesh.positions.size());
     mesh.colors.resize(mesh.positions.size());
     ParallelOptions parallel;

@@ -80,6 +80,7 @@ void LaneTileRenderer::clearRays() {
     rays_.clear();
     rayPixel_.clear();
     rayBlock_.clear();
+    bypass_.clear();
 }
 
 void LaneTileRenderer::refineSamples(const Tile& tile, const Tile& blocks,
@@ -109,20 +110,27 @@ void LaneTileRenderer::pushSampleRay(const Tile& blocks, int px, int py, int k, 
     const int blocksAcross = (blocks.x1 - blocks.x0 + kConeBlock - 1) / kConeBlock;
     const int block = (py - blocks.y0) / kConeBlock * blocksAcross + (px - blocks.x0) / kConeBlock;
     const double start = blockStart_[size_t(block)];
-    if (start == std::numeric_limits<double>::infinity()) return;  // cone missed
     auto [sx, sy] = samplePosition(k, samples_, px, py);
     const Ray ray = camera_->generateRay(px + sx, py + sy, lensSample(k, px, py));
     auto interval = intersectSphere(ray, boundingRadius_);
     const double tNear = interval ? interval->tNear : 1;
     const double tFar = interval ? interval->tFar : -1;  // none: tNear > tFar
     const double near = std::max(tNear, start);
-    if (!(near <= tFar)) return;
+    // The cone or the bounding sphere missed: the ray skips the set.
+    if (!(near <= tFar)) {
+        if (bypassing_) bypass_.push_back({ray, target});
+        return;
+    }
     rays_.push(ray, near, tFar);
     rayPixel_.push_back(target);
     rayBlock_.push_back(block);
 }
 
 void LaneTileRenderer::traceInto(std::vector<PixelSamples>& pixels, LaneTileStats& stats) {
+    if (scenery_) {
+        tracePaths(pixels, stats);
+        return;
+    }
     if (rays_.size() == 0) return;
     traceCameraRays(lanes_, march_, rays_, traced_, stats.camera);
     collectHits(stats);

@@ -81,7 +81,9 @@ double LaneTileRenderer::coneRatio(const Camera& camera) {
 
 void LaneTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixels,
                               LaneTileStats& stats) {
+    currentTile_ = tile;
     if (adaptive_ && samples_ > 1) {
+        sampleKey_ = -1;  // each pixel's own count of samples
         renderAdaptive(tile, pixels, stats);
     } else {
         renderUniform(tile, pixels, stats);
@@ -97,6 +99,7 @@ void LaneTileRenderer::renderUniform(const Tile& tile, std::vector<PixelSamples>
     stats.rays += int64_t(samples_) * int64_t(pixels.size());
     marchCones(tile, stats);
     for (int k = 0; k < samples_; ++k) {
+        sampleKey_ = k;
         sampleRays(tile, k);
         traceInto(pixels, stats);
     }
@@ -105,19 +108,18 @@ void LaneTileRenderer::renderUniform(const Tile& tile, std::vector<PixelSamples>
 void LaneTileRenderer::sampleRays(const Tile& tile, int k) {
     const int width = tile.x1 - tile.x0;
     const int blocksAcross = (width + kConeBlock - 1) / kConeBlock;
-    rays_.clear();
-    rayPixel_.clear();
-    rayBlock_.clear();
+    clearRays();
     for (int py = tile.y0; py < tile.y1; ++py) {
         const double* blockRow =
             blockStart_.data() + size_t((py - tile.y0) / kConeBlock * blocksAcross);
-        // A row whose blocks' cones all missed has no ray to march.
-        if (std::all_of(blockRow, blockRow + blocksAcross, [](double start) {
+        // A row whose blocks' cones all missed has no ray to march (but its rays may see the
+        // ground).
+        if (!bypassing_ && std::all_of(blockRow, blockRow + blocksAcross, [](double start) {
                 return start == std::numeric_limits<double>::infinity();
             })) {
             continue;
         }
-        if (samples_ == 1 && !camera_->thinLens()) {
+        if (samples_ == 1 && !camera_->thinLens() && !bypassing_) {
             rowRays(tile, py, blockRow);
         } else {
             sampleRowRays(tile, py, k);
@@ -146,11 +148,15 @@ void LaneTileRenderer::pushRowRays(const Tile& tile, int py, const double* block
     for (int px = tile.x0; px < tile.x1; ++px) {
         const int column = (px - tile.x0) / kConeBlock;
         const double start = blockStart[column];
-        if (start == std::numeric_limits<double>::infinity()) continue;  // cone missed
         const RowRay& r = rowRays_[size_t(px - tile.x0)];
         const double near = std::max(r.tNear, start);
-        // Not r.tNear <= r.tFar: the sphere missed, or the cone found nothing on it.
-        if (!(near <= r.tFar)) continue;
+        // Not r.tNear <= r.tFar: the sphere or the cone missed, or the cone found nothing on it.
+        if (!(near <= r.tFar)) {
+            if (bypassing_)
+                bypass_.push_back(
+                    {Ray{r.origin, r.direction}, (py - tile.y0) * width + (px - tile.x0)});
+            continue;
+        }
         rays_.push(Ray{r.origin, r.direction}, near, r.tFar);
         rayPixel_.push_back((py - tile.y0) * width + (px - tile.x0));
         rayBlock_.push_back(rowBlock + column);
@@ -254,7 +260,9 @@ void LaneTileRenderer::marchCones(const Tile& tile, LaneTileStats& stats) {
         stats.marchSteps += r.steps;
         double& start = blockStart_[size_t(coneBlock_[i])];
         if (r.end == TraceEnd::Miss && r.steps < march_.maxSteps) {
-            start = std::numeric_limits<double>::infinity();
+            // With a glow, the rays near the set that it missed are marched all the same: their
+            // least estimates are the glow's.
+            start = shader_->glowIntensity() > 0 ? 0.0 : std::numeric_limits<double>::infinity();
         } else {
             // Start the block's rays at the cone's last point whose ball was clear: the set is
             // not on them before it, and the point itself is outside, where normals are taken.
@@ -277,6 +285,7 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
     }
     sampleSurfaces();
     lightSurfaces(lightConstants_, surfaces_);  // the colours: surfaces_.red, green, blue
+    if (!shader_->extraLights().empty()) lightOthers(stats);
 }
 
 void LaneTileRenderer::hitNormals(LaneTileStats& stats) {

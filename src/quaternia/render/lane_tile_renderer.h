@@ -11,6 +11,7 @@
 #include "quaternia/render/camera.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/march.h"
+#include "quaternia/render/optics.h"
 #include "quaternia/render/shade.h"
 #include "quaternia/util/parallel.h"
 
@@ -39,6 +40,8 @@ class LaneTileRenderer {
                 const MarchSettings& march, int samples, bool adaptive = false);
     // Whether the pixels also sum their hits' normals and orbit traps (RenderOptions::passes).
     void setPasses(bool passes) { passes_ = passes; }
+    // The set's material and the ground (lane_tile_scenery.cpp); call after rebind too.
+    void setScenery(const MaterialSettings& material, const GroundSettings& ground);
 
     // Marches and shades the samples of every pixel of the tile (all of them, or adaptively);
     // pixels[(y - y0) * width + (x - x0)] receives the sums of pixel (x, y).
@@ -60,6 +63,85 @@ class LaneTileRenderer {
     void clearRays();
     // Marches and shades rays_ and adds each hit to pixels[rayPixel_].
     void traceInto(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
+
+    // ---- The scene around the set (lane_tile_scenery.cpp) ----
+    // Whether traceInto follows whole paths: reflection, refraction, the ground, glow. With the
+    // ground, the camera rays that skip the set (their cone or the bounding sphere missed) go
+    // to bypass_.
+    bool scenery_ = false;
+    bool bypassing_ = false;  // the ground or the glow: rays that skip the set still count
+    struct BypassRay {
+        Ray ray;
+        int pixel;
+    };
+    std::vector<BypassRay> bypass_;
+    // A ray of a path: where it goes, which camera sample it serves (samples_ index) and with
+    // what weight, how far the path has come, and how many bounces it took.
+    struct PathRay {
+        Ray ray;
+        double tNear = 0;  // camera rays: their cone's start
+        int sample = 0;
+        Color weight;
+        double travelled = 0;
+        int depth = 0;
+        bool camera = false;
+        int block = -1;
+    };
+    // A camera sample's result: colour (premultiplied) and alpha, its first hit (depth,
+    // normal, trap) and what it hit.
+    struct SampleResult {
+        int pixel = 0;
+        Color color;
+        double alpha = 0, depth = 0, trap = 0;
+        Vector3d normal;
+        uint8_t object = 0;  // 0 nothing, 1 the set, 2 the ground
+        int key = 0;         // the pixel's sample index, for glossy directions
+        double glow = 0;     // the glow's opacity in front of it
+    };
+    std::vector<SampleResult> sampleResults_;
+    std::vector<PathRay> outside_, inside_, nextOutside_, nextInside_;
+    int sampleKey_ = -1;  // the sample index k of renderUniform's pass (-1: per pixel's count)
+    Tile currentTile_{};  // the tile being rendered
+    // traceInto with paths: camera rays, then their reflections and refractions, wave by wave.
+    void tracePaths(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
+    // One wave of rays outside the set: marched, then shaded where they hit the set or the
+    // ground, their children queued.
+    void traceOutsideWave(LaneTileStats& stats);
+    // The hits_ of an outside wave, shaded (shadeHits), into their samples, and their
+    // reflected and refracted rays queued.
+    void shadeSetHits();
+
+    // One wave of refracted rays inside the set: fixed steps to where they leave it.
+    void traceInsideWave(LaneTileStats& stats);
+    // What a ray that hits neither the set nor (usable) ground sees: the background.
+    void seeBackground(const PathRay& path);
+    // Queues a child ray of `parent` (or, past the depth or below the weight worth a ray, adds
+    // the background along it to its sample).
+    void spawn(const PathRay& parent, const Ray& ray, const Color& weight, double travelled,
+               bool inside);
+    // The ground: where ray meets the plane (infinity where not ahead).
+    double groundDistance(const Ray& ray) const;
+    struct GroundHit {
+        size_t path;
+        double t;
+    };
+    std::vector<GroundHit> groundHits_;
+    void shadeGround(LaneTileStats& stats);
+    // The lights of [light1] .. [light7] at the hits of hits_, added to surfaces_' colours.
+    void lightOthers(LaneTileStats& stats);
+    // Shadow-ray visibility of `light` from points (origins of shadowRays_ as aimed by the
+    // caller): marched in lanes, into shadowVisibility_.
+    void marchShadowsOf(const LightSource& light, LaneTileStats& stats);
+    // Inside waves: per path, the fixed step index, the bracket of the exit, bisection rounds.
+    PointBatch insidePoints_;
+    std::vector<PointEstimate> insideEstimates_;
+    std::vector<double> insideLow_, insideHigh_, insideFar_;
+    std::vector<size_t> marchedPaths_;
+    std::vector<double> groundKeyVisibility_, groundOtherVisibility_;
+    std::vector<Color> groundColor_;
+    std::vector<KeyLight> otherLights_;
+    MaterialSettings material_;
+    GroundSettings ground_;
 
     // Cone marching (Amanatides 1984; as in demoscene "cone marching"): one cone per block of
     // kConeBlock^2 pixels marched to where the set may be near, so that the pixels' own rays

@@ -18,6 +18,7 @@
 #include "quaternia/render/march.h"
 #include "quaternia/render/shade.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/util/error.h"
 #include "quaternia/util/parallel.h"
 
 namespace quaternia {
@@ -169,6 +170,8 @@ class FrameRenderer {
     const Fractal fractal_;
     const Camera camera_;
     const Shader shader_;
+    const MaterialSettings material_;
+    const GroundSettings ground_;
     const MarchSettings march_;
     const int samples_;
     const bool adaptive_;  // adaptive sampling (adaptive_sampling.h): render.adaptive, samples > 1
@@ -192,7 +195,9 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
                              RenderResult& result)
     : fractal_(Fractal::fromScene(scene)),
       camera_(scene.camera, scene.render.width, scene.render.height),
-      shader_(scene.shading, fractal_),
+      shader_(scene.shading, fractal_, scene.lights),
+      material_(scene.material),
+      ground_(scene.ground),
       march_{fractal_.distanceKind() == DistanceKind::kLipschitz ? MarchMethod::FixedStep
                                                                  : scene.render.method,
              scene.render.step,
@@ -226,6 +231,21 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
         else if (!(lanes_ = LaneFractal::fromBicomplex(fractal_, scene.render.precision)))
             lanes_ = LaneFractal::fromOctonion(scene, fractal_, scene.render.precision);
     }
+    // Reflection, refraction, the ground and the glow are paths of the SIMD path's waves
+    // (lane_tile_scenery.cpp) only.
+    if (!lanes_) {
+        const char* key = scene.material.reflectivity > 0   ? "material.reflectivity"
+                          : scene.material.transparency > 0 ? "material.transparency"
+                          : scene.ground.enabled            ? "ground.enabled"
+                          : scene.shading.glowIntensity > 0 ? "shading.glow_intensity"
+                                                            : nullptr;
+        if (key)
+            throw UserError(key, std::string(key) +
+                                     " needs the simd engine (render.engine = \"simd\", "
+                                     "render.method = \"sphere\", a quaternion, bicomplex "
+                                     "or octonion set); this scene renders with the scalar "
+                                     "reference");
+    }
     shader_.toDisplay(&backgroundDisplay_, 1);
 }
 
@@ -233,19 +253,23 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
 // The background (seen through the pixel centre) is read only where some sample missed.
 Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
                                 const Color& background) const {
+    // The sums are premultiplied by each sample's alpha (1 for every hit of the set).
     const int hits = pixel.hits, samples = pixel.samples;
-    double coverage = double(hits) / samples;
+    const double covered = hits - pixel.uncovered;
+    double coverage = covered / samples;
     Color color;
-    if (hits == samples) {
+    if (hits == samples && pixel.uncovered == 0) {
         color = pixel.sum / double(samples);
     } else if (opaque_) {
         color = pixel.sum / double(samples) + background * (1 - coverage);
     } else {
-        color = hits > 0 ? pixel.sum / double(hits) : background;
+        color = covered > 0 ? pixel.sum / covered : background;
     }
     if (opaque_) coverage = 1;
+    const int objectHits = hits - pixel.layerHits;  // of the set or the ground
     if (depth_) {
-        double depth = hits > 0 ? (pixel.depthSum / hits - depthNear_) / depthRange_ : 1;
+        double depth =
+            objectHits > 0 ? (pixel.depthSum / objectHits - depthNear_) / depthRange_ : 1;
         result_.depth.at(px - windowX0_, py - windowY0_) = float(std::clamp(depth, 0.0, 1.0));
     }
     const Rgba linear{float(color.x), float(color.y), float(color.z), float(coverage)};
@@ -253,15 +277,15 @@ Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
         RenderPasses& p = result_.passes;
         const size_t i = size_t(py - windowY0_) * size_t(p.width) + size_t(px - windowX0_);
         p.linear[i] = linear;
-        if (hits > 0) {
-            p.distance[i] = float(pixel.depthSum / hits);
-            p.trap[i] = float(pixel.trapSum / hits);
+        if (objectHits > 0) {
+            p.distance[i] = float(pixel.depthSum / objectHits);
+            p.trap[i] = float(pixel.trapSum / objectHits);
             const double n = length(pixel.normalSum);
             if (n > 0) {
                 const Vector3d unit = pixel.normalSum / n;
                 p.normal[i] = {float(unit.x), float(unit.y), float(unit.z)};
             }
-            p.object[i] = 1;
+            p.object[i] = objectHits > pixel.groundHits ? 1 : 2;  // the set, else the ground
         }
     }
     return linear;
@@ -379,9 +403,11 @@ void FrameRenderer::renderTileInLanes(const Tile& tile, ThreadTotals& thread) co
         thread.laneTiles = std::make_unique<LaneTileRenderer>(*lanes_, camera_, shader_, march_,
                                                               samples_, true, adaptive_);
         thread.laneTiles->setPasses(passes_);
+        thread.laneTiles->setScenery(material_, ground_);
     } else if (!thread.laneTilesBound) {
         thread.laneTiles->rebind(*lanes_, camera_, shader_, march_, samples_, adaptive_);
         thread.laneTiles->setPasses(passes_);
+        thread.laneTiles->setScenery(material_, ground_);
     }
     thread.laneTilesBound = true;
     LaneTileStats tileStats;

@@ -19,19 +19,32 @@ double smoothstep(double a, double b, double v) {
 
 }  // namespace
 
-Shader::Shader(const ShadingSettings& settings, const Fractal& fractal)
+Shader::Shader(const ShadingSettings& settings, const Fractal& fractal,
+               std::span<const LightSettings> extraLights)
     : settings_(settings),
       fractal_(fractal),
       lightDirection_(normalize(settings.lightDirection)),
       fillDirection_(normalize(settings.fillDirection)),
-      spotAxis_(settings.lightKind == LightKind::Spot
-                    ? normalize(settings.spotTarget - settings.lightPosition)
-                    : Vector3d(0, 0, 1)),
-      spotCosOuter_(std::cos(settings.spotAngle * M_PI / 180)),
-      spotCosInner_(std::cos(settings.spotAngle * (1 - settings.spotSoftness) * M_PI / 180)),
       // Occlusion is probed over a few percent of the object's size: the scale of its folds.
       occlusionStep_(0.025 * fractal.boundingRadius()),
       highlightCutoff_(std::pow(1e-7, 1 / std::max(settings.shininess, 1e-3))) {
+    // The key light: settings_'s own keys, its penumbra from shadow_softness.
+    LightSource key;
+    key.kind = settings.lightKind;
+    key.direction = lightDirection_;
+    key.position = Point3d(settings.lightPosition);
+    key.color = settings.lightColor;
+    key.intensity = settings.lightIntensity;
+    key.shadows = settings.shadows;
+    key.softness = settings.shadowSoftness;
+    if (settings.lightKind == LightKind::Spot) {
+        key.spotAxis = normalize(settings.spotTarget - settings.lightPosition);
+        key.spotCosOuter = std::cos(settings.spotAngle * M_PI / 180);
+        key.spotCosInner = std::cos(settings.spotAngle * (1 - settings.spotSoftness) * M_PI / 180);
+    }
+    lights_.push_back(key);
+    for (const LightSettings& light : extraLights)
+        if (light.enabled) lights_.push_back(lightSourceOf(light));
     // Infinitely far, the background is all fog.
     if (settings_.fogDensity > 0)
         settings_.backgroundTop = settings_.backgroundBottom = settings_.fogColor;
@@ -52,53 +65,94 @@ double Shader::shadowMinimumStep() const {
 }
 
 double Shader::visibilityFromMarch(double marched) const {
-    return settings_.shadows == Shadows::Soft ? smoothstep(0, 1, marched) : marched;
+    return visibilityOf(keySource(), marched);
 }
 
-KeyLight Shader::keyLight(const Point3d& x) const {
+double Shader::visibilityOf(const LightSource& light, double marched) const {
+    return light.shadows == Shadows::Soft ? smoothstep(0, 1, marched) : marched;
+}
+
+LightSource lightSourceOf(const LightSettings& settings) {
+    LightSource light;
+    light.kind = settings.kind;
+    light.direction = normalize(settings.direction);
+    light.position = Point3d(settings.position);
+    light.color = settings.color;
+    light.intensity = settings.intensity;
+    if (settings.kind == LightKind::Spot) {
+        light.spotAxis = normalize(settings.spotTarget - settings.position);
+        light.spotCosOuter = std::cos(settings.spotAngle * M_PI / 180);
+        light.spotCosInner =
+            std::cos(settings.spotAngle * (1 - settings.spotSoftness) * M_PI / 180);
+    }
+    // Quilez's penumbra min k h / t is the fraction of a light of angular radius 1 / k that a
+    // point sees past an occluder at distance h from the ray, t along it (small angles). A
+    // sphere of radius r at distance D subtends r / D: k = D / r, D taken from the set's centre
+    // (the origin) to the light. No size: hard shadows.
+    light.shadows = settings.shadows;
+    const double angle = settings.kind == LightKind::Directional
+                             ? std::tan(settings.angularRadius * M_PI / 180)
+                             : settings.radius / std::max(length(settings.position), 1e-9);
+    if (light.shadows == Shadows::Soft && !(angle > 0)) light.shadows = Shadows::Hard;
+    light.softness = angle > 0 ? 1 / angle : 1;
+    return light;
+}
+
+KeyLight Shader::illumination(const LightSource& light, const Point3d& x) {
     KeyLight key;
-    if (settings_.lightKind == LightKind::Directional) {
-        key.toLight = lightDirection_;
-        key.scale = settings_.lightIntensity;
+    if (light.kind == LightKind::Directional) {
+        key.toLight = light.direction;
+        key.scale = light.intensity;
         key.distance = std::numeric_limits<double>::infinity();
         return key;
     }
     // A point light's irradiance falls with the inverse square of the distance.
-    const Vector3d toLight = settings_.lightPosition - x;
+    const Vector3d toLight = light.position - x;
     key.distance = length(toLight);
     key.toLight = toLight / key.distance;
-    key.scale = settings_.lightIntensity / (key.distance * key.distance);
-    if (settings_.lightKind == LightKind::Spot) {
+    key.scale = light.intensity / (key.distance * key.distance);
+    if (light.kind == LightKind::Spot) {
         // Full within the inner cone, dark beyond the outer, a smoothstep between.
-        const double cosine = -dot(key.toLight, spotAxis_);
-        key.scale *= cosine >= spotCosInner_   ? 1
-                     : cosine <= spotCosOuter_ ? 0
-                                               : smoothstep(spotCosOuter_, spotCosInner_, cosine);
+        const double cosine = -dot(key.toLight, light.spotAxis);
+        key.scale *= cosine >= light.spotCosInner ? 1
+                     : cosine <= light.spotCosOuter
+                         ? 0
+                         : smoothstep(light.spotCosOuter, light.spotCosInner, cosine);
     }
     return key;
 }
 
 std::optional<RayInterval> Shader::shadowInterval(const Ray& ray, const KeyLight& key) const {
+    return shadowIntervalOf(ray, key, keySource());
+}
+
+std::optional<RayInterval> Shader::shadowIntervalOf(const Ray& ray, const KeyLight& key,
+                                                    const LightSource& light) const {
     auto interval = intersectSphere(ray, fractal_.boundingRadius());
     if (!interval) return std::nullopt;
     // A point light's distance from the ray's own origin (a shadow origin lies a little off the
     // surface point the key light was taken at).
     const double toLight =
-        keyLightIsDirectional() ? key.distance : length(settings_.lightPosition - ray.origin);
+        light.kind == LightKind::Directional ? key.distance : length(light.position - ray.origin);
     interval->tFar = std::min(interval->tFar, toLight);
     if (!(interval->tNear < interval->tFar)) return std::nullopt;
     return interval;
 }
 
 double Shader::shadow(const Point3d& p, const KeyLight& key, ShadingStats& stats) const {
-    if (settings_.shadows == Shadows::None) return 1;
+    return shadowOf(p, key, keySource(), stats);
+}
+
+double Shader::shadowOf(const Point3d& p, const KeyLight& key, const LightSource& light,
+                        ShadingStats& stats) const {
+    if (light.shadows == Shadows::None) return 1;
     Ray ray{p, key.toLight};
-    auto interval = shadowInterval(ray, key);
+    auto interval = shadowIntervalOf(ray, key, light);
     if (!interval) return 1;
     if (fractal_.distanceKind() == DistanceKind::kLipschitz)
         return lipschitzShadow(ray, *interval, stats);
+    const bool soft = light.shadows == Shadows::Soft;
     const double minimumStep = shadowMinimumStep();
-    const bool soft = settings_.shadows == Shadows::Soft;
     double visibility = 1;
     double t = 0;
     // Over-relaxed sphere tracing (Keinert et al. 2014): steps of shadowRelaxation() times the
@@ -117,15 +171,14 @@ double Shader::shadow(const Point3d& p, const KeyLight& key, ShadingStats& stats
         }
         if (e.inside || e.distance < 0.5 * minimumStep) return 0;
         // The penumbra: how nearly the shadow ray grazed the set relative to how far it went.
-        if (soft && t > 0)
-            visibility = std::min(visibility, settings_.shadowSoftness * e.distance / t);
+        if (soft && t > 0) visibility = std::min(visibility, light.softness * e.distance / t);
         const double newRadius = std::max(e.distance, minimumStep);
         relaxation = shadowRelaxation(radius, newRadius, step);
         radius = newRadius;
         step = relaxation * radius;
         t += step;
     }
-    return visibilityFromMarch(soft ? visibility : 1);
+    return visibilityOf(light, soft ? visibility : 1);
 }
 
 double Shader::lipschitzShadow(const Ray& ray, const RayInterval& interval,
@@ -209,7 +262,25 @@ Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingSta
             ? ambientFromOpenness(ambientOcclusion(hit.outside, sample.normal, stats))
             : 1;
     if (surface) *surface = sample;
-    return light(sample, ray);
+    Color color = light(sample, ray);
+    for (const LightSource& other : extraLights()) {
+        const KeyLight at = illumination(other, hit.outside);
+        if (!(keyDiffuse(sample.normal, at) > 0)) continue;
+        const double visibility =
+            shadowOf(shadowOrigin(hit.outside, sample.normal, footprint), at, other, stats);
+        color += lightOther(other, at, sample.normal, sample.albedo, ray.direction, visibility);
+    }
+    return color;
+}
+
+Color Shader::lightOther(const LightSource& light, const KeyLight& at, const Vector3d& normal,
+                         const Color& albedo, const Vector3d& view, double visibility) const {
+    const double diffuse = keyDiffuse(normal, at);
+    if (!(diffuse > 0) || !(visibility > 0)) return Color();
+    const double cosine = dot(normal, normalize(at.toLight - view));
+    const double highlight = cosine > highlightCutoff_ ? std::pow(cosine, settings_.shininess) : 0;
+    return light.color * (at.scale * visibility) *
+           (albedo * diffuse + Color(1, 1, 1) * (settings_.specular * highlight));
 }
 
 Color Shader::light(const SurfaceSample& sample, const Ray& ray) const {

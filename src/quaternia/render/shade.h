@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/image/image.h"
@@ -42,9 +44,27 @@ struct KeyLight {
     double distance = 0;
 };
 
+// A light of the scene as the shader uses it: the key light of [shading] (Shader::keySource) or
+// one of [light1] .. [light7] (Shader::extraLights).
+struct LightSource {
+    LightKind kind = LightKind::Directional;
+    Vector3d direction;  // unit, towards a directional light
+    Point3d position;    // of a point or spot light
+    Color color;
+    double intensity = 1;
+    Vector3d spotAxis;                              // unit, from a spot light to its target
+    double spotCosOuter = -1, spotCosInner = -0.5;  // the cone's edge: dark beyond outer
+    Shadows shadows = Shadows::Soft;
+    double softness = 12;  // penumbra sharpness k of soft shadows (Shader::shadow)
+};
+// The light of [lightN].
+LightSource lightSourceOf(const LightSettings& settings);
+
 class Shader {
   public:
-    Shader(const ShadingSettings& settings, const Fractal& fractal);
+    // extraLights: [light1] .. [light7] (only the enabled ones shine).
+    Shader(const ShadingSettings& settings, const Fractal& fractal,
+           std::span<const LightSettings> extraLights = {});
 
     // Linear colour of the surface at `hit`, seen along `ray`. `footprint` is the pixel
     // footprint at the hit, the scale of the offsets that leave the surface.
@@ -63,6 +83,18 @@ class Shader {
         const double kept = std::exp(-settings_.fogDensity * t);
         return c * kept + settings_.fogColor * (1 - kept);
     }
+    // What part of light from distance t passes the fog, and the fog's colour.
+    double fogKept(double t) const {
+        return settings_.fogDensity > 0 ? std::exp(-settings_.fogDensity * t) : 1.0;
+    }
+    const Color& fogColor() const { return settings_.fogColor; }
+    double glowIntensity() const { return settings_.glowIntensity; }
+    double glowRadius() const { return settings_.glowRadius; }
+    // The glow's opacity in front of a camera ray whose least distance estimate was `closest`.
+    double glowOpacity(double closest) const {
+        return std::min(1.0, settings_.glowIntensity * std::exp(-closest / settings_.glowRadius));
+    }
+    const Color& glowColor() const { return settings_.glowColor; }
     // background() for the pixel centres px = x0 .. x0 + count - 1 of one camera row
     // (Camera::rowDirections), in float, with the given alpha: a loop the compiler vectorises.
     void backgroundRow(const Vector3d& first, const Vector3d& step, int x0, int count, float alpha,
@@ -83,7 +115,25 @@ class Shader {
     bool albedoUsesOrbit() const { return settings_.coloring != Coloring::Solid; }
 
     // The pieces both paths share. The key light at point x.
-    KeyLight keyLight(const Point3d& x) const;
+    KeyLight keyLight(const Point3d& x) const { return illumination(lights_.front(), x); }
+    // Any light at point x: its direction, its factor (intensity, inverse square, spot cone).
+    static KeyLight illumination(const LightSource& light, const Point3d& x);
+    const LightSource& keySource() const { return lights_.front(); }
+    // The enabled lights of [light1] .. [light7], in order.
+    std::span<const LightSource> extraLights() const {
+        return std::span<const LightSource>(lights_).subspan(1);
+    }
+    // Visibility of `light` from p (1 lit), by its shadows and softness; shadow() for the key.
+    double shadowOf(const Point3d& p, const KeyLight& at, const LightSource& light,
+                    ShadingStats& stats) const;
+    std::optional<RayInterval> shadowIntervalOf(const Ray& ray, const KeyLight& at,
+                                                const LightSource& light) const;
+    // What a light other than the key adds to a surface of this normal and albedo seen along
+    // `view`: Lambert's diffuse and the key light's Blinn-Phong highlight, times its visibility.
+    Color lightOther(const LightSource& light, const KeyLight& at, const Vector3d& normal,
+                     const Color& albedo, const Vector3d& view, double visibility) const;
+    // The visibility a shadow ray's march leaves as light, for `light`'s kind of shadows.
+    double visibilityOf(const LightSource& light, double marched) const;
     // Whether the key light's shadows are rays towards a direction (parallel rays).
     bool keyLightIsDirectional() const { return settings_.lightKind == LightKind::Directional; }
     // The key light's diffuse term (0 where it does not reach the front of the surface, and no
@@ -140,8 +190,8 @@ class Shader {
     ShadingSettings settings_;
     const Fractal& fractal_;
     Vector3d lightDirection_, fillDirection_;
-    Vector3d spotAxis_;                   // unit, from a spot light towards its target
-    double spotCosOuter_, spotCosInner_;  // the cone's edge: dark beyond outer, full within inner
+    // The key light, then the enabled extra lights.
+    std::vector<LightSource> lights_;
     double occlusionStep_;
     // occlusionFromEstimates' factors: 2 / height and the normalised weight of each sample.
     std::array<double, kOcclusionSamples> occlusionScale_, occlusionWeight_;

@@ -1,153 +1,17 @@
 // The parameter table: every scene setting declared once, with its name, type, default, range
 // and help. This one table drives scene files, --set, --help, validation and the explorer's
 // controls (/api/parameters); parameters.cpp holds the machinery that reads it.
+#include <algorithm>
+#include <iterator>
 #include <utility>
 
+#include "quaternia/scene/parameter_builders.h"
 #include "quaternia/scene/parameters.h"
 
 namespace quaternia {
 namespace {
 
-// ---- Typed helpers: each builds one table entry bound to one Scene field -----------------------
-
-Parameter makeParameter(std::string section, std::string key, ParameterType type,
-                        ParameterValue defaultValue, double minimum, double maximum,
-                        std::string help) {
-    Parameter p;
-    p.section = std::move(section);
-    p.key = std::move(key);
-    p.type = type;
-    p.defaultValue = std::move(defaultValue);
-    p.minimum = minimum;
-    p.maximum = maximum;
-    p.help = std::move(help);
-    return p;
-}
-
-template <typename Section>
-Parameter realParameter(std::string section, std::string key, Section Scene::*part,
-                        double Section::*field, double defaultValue, double minimum, double maximum,
-                        std::string help) {
-    Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Real,
-                                defaultValue, minimum, maximum, std::move(help));
-    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
-        (scene.*part).*field = std::get<double>(value);
-    };
-    p.read = [part, field](const Scene& scene) -> ParameterValue { return (scene.*part).*field; };
-    return p;
-}
-
-// `allowed`, if not empty, lists the only values allowed within [minimum, maximum].
-template <typename Section>
-Parameter integerParameter(std::string section, std::string key, Section Scene::*part,
-                           int Section::*field, int64_t defaultValue, int64_t minimum,
-                           int64_t maximum, std::string help, std::vector<int64_t> allowed = {}) {
-    Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Integer,
-                                defaultValue, double(minimum), double(maximum), std::move(help));
-    p.allowedIntegers = std::move(allowed);
-    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
-        (scene.*part).*field = int(std::get<int64_t>(value));  // the range makes it fit
-    };
-    p.read = [part, field](const Scene& scene) -> ParameterValue {
-        return int64_t{(scene.*part).*field};
-    };
-    return p;
-}
-
-template <typename Section>
-Parameter booleanParameter(std::string section, std::string key, Section Scene::*part,
-                           bool Section::*field, bool defaultValue, std::string help) {
-    Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Boolean,
-                                defaultValue, 0, 0, std::move(help));
-    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
-        (scene.*part).*field = std::get<bool>(value);
-    };
-    p.read = [part, field](const Scene& scene) -> ParameterValue { return (scene.*part).*field; };
-    return p;
-}
-
-// Text whose length in bytes lies in [minimumLength, maximumLength].
-template <typename Section>
-Parameter textParameter(std::string section, std::string key, Section Scene::*part,
-                        std::string Section::*field, std::string defaultValue, int minimumLength,
-                        int maximumLength, std::string help) {
-    Parameter p =
-        makeParameter(std::move(section), std::move(key), ParameterType::Text,
-                      std::move(defaultValue), minimumLength, maximumLength, std::move(help));
-    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
-        (scene.*part).*field = std::get<std::string>(value);
-    };
-    p.read = [part, field](const Scene& scene) -> ParameterValue { return (scene.*part).*field; };
-    return p;
-}
-
-// An enum chosen by name; `options` maps each word to its enum value, in display order.
-template <typename Section, typename Enum>
-Parameter choiceParameter(std::string section, std::string key, Section Scene::*part,
-                          Enum Section::*field, std::string defaultValue,
-                          std::vector<std::pair<std::string, Enum>> options, std::string help) {
-    Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Choice,
-                                std::move(defaultValue), 0, 0, std::move(help));
-    for (const auto& option : options)
-        p.choices.push_back(option.first);
-    p.apply = [part, field, options](Scene& scene, const ParameterValue& value) {
-        const auto& word = std::get<std::string>(value);
-        for (const auto& [name, enumValue] : options)
-            if (name == word) (scene.*part).*field = enumValue;
-    };
-    p.read = [part, field, options](const Scene& scene) -> ParameterValue {
-        for (const auto& [name, enumValue] : options)
-            if (enumValue == (scene.*part).*field) return name;
-        return std::string("?");  // an enum value the table does not name; checkedValue rejects it
-    };
-    return p;
-}
-
-// A vector of N reals stored in any field with operator[] (Vector3d, Quaternion in (1, i, j, k)
-// order, std::array); [minimum, maximum] bounds each component.
-template <std::size_t N, typename Section, typename Field>
-Parameter vectorParameter(std::string section, std::string key, Section Scene::*part,
-                          Field Section::*field, const double (&defaultValue)[N], double minimum,
-                          double maximum, std::string help) {
-    static_assert(N == 2 || N == 3 || N == 4 || N == 6);
-    ParameterType type = N == 2   ? ParameterType::Vector2
-                         : N == 3 ? ParameterType::Vector3
-                         : N == 4 ? ParameterType::Vector4
-                                  : ParameterType::Vector6;
-    Parameter p = makeParameter(std::move(section), std::move(key), type,
-                                std::vector<double>(defaultValue, defaultValue + N), minimum,
-                                maximum, std::move(help));
-    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
-        const auto& v = std::get<std::vector<double>>(value);
-        for (std::size_t i = 0; i < N; ++i)
-            ((scene.*part).*field)[int(i)] = v[i];
-    };
-    p.read = [part, field](const Scene& scene) -> ParameterValue {
-        std::vector<double> v(N);
-        for (std::size_t i = 0; i < N; ++i)
-            v[i] = ((scene.*part).*field)[int(i)];
-        return v;
-    };
-    return p;
-}
-
-// A vector of reals whose allowed lengths are `lengths` (ParameterType::Components), stored as
-// is in a std::vector<double> field; `groupLength` as Parameter::groupLength.
-template <typename Section>
-Parameter componentsParameter(std::string section, std::string key, Section Scene::*part,
-                              std::vector<double> Section::*field, std::vector<double> defaultValue,
-                              std::vector<std::size_t> lengths, double minimum, double maximum,
-                              std::string help, std::size_t groupLength = 0) {
-    Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Components,
-                                std::move(defaultValue), minimum, maximum, std::move(help));
-    p.lengths = std::move(lengths);
-    p.groupLength = groupLength;
-    p.apply = [part, field](Scene& scene, const ParameterValue& value) {
-        (scene.*part).*field = std::get<std::vector<double>>(value);
-    };
-    p.read = [part, field](const Scene& scene) -> ParameterValue { return (scene.*part).*field; };
-    return p;
-}
+using namespace parameter_builders;
 
 // fractal.c: 4 components (1, i, j, k) for the 4-component algebras, 8 for biquaternions and
 // octonions; the first 4 go to FractalSettings::c, the rest to cUpper, and cComponents records
@@ -196,9 +60,8 @@ std::vector<std::pair<std::string, RotationPlane>> rotationPlanes(bool withNone)
     return planes;
 }
 
-}  // namespace
-
-std::vector<Parameter> buildParameterTable() {
+// Every section but those of sceneryParameters().
+std::vector<Parameter> coreParameters() {
     using S = Scene;
     using F = FractalSettings;
     using L = SliceSettings;
@@ -390,6 +253,14 @@ std::vector<Parameter> buildParameterTable() {
                       "infinitely far, is fog_color; 0 is no fog"),
         vectorParameter("shading", "fog_color", &S::shading, &H::fogColor, {0.5, 0.55, 0.6}, 0, 100,
                         "Linear RGB colour of the fog"),
+        realParameter("shading", "glow_intensity", &S::shading, &H::glowIntensity, 0, 0, 100,
+                      "A glow about the set: a ray that passes at distance d from the surface "
+                      "takes glow_color with opacity intensity x exp(-d / glow_radius) (at most "
+                      "1); 0 is no glow"),
+        realParameter("shading", "glow_radius", &S::shading, &H::glowRadius, 0.05, 1e-4, 1,
+                      "How far the glow reaches from the surface, in world units"),
+        vectorParameter("shading", "glow_color", &S::shading, &H::glowColor, {0.4, 0.6, 1.0}, 0,
+                        100, "Linear RGB colour of the glow"),
         realParameter("shading", "gamma", &S::shading, &H::gamma, 2.2, 0.1, 10,
                       "Display gamma of the encoded image (2.2 is close to sRGB)"),
         realParameter("shading", "exposure", &S::shading, &H::exposure, 1, 0, 100,
@@ -482,6 +353,19 @@ std::vector<Parameter> buildParameterTable() {
                       "c travels once around a circle of this radius about fractal.c over the "
                       "film; 0 keeps c still"),
     };
+}
+
+}  // namespace
+
+std::vector<Parameter> buildParameterTable() {
+    std::vector<Parameter> table = coreParameters();
+    // The lights, the material and the ground come after [shading].
+    const auto plane = std::find_if(table.begin(), table.end(),
+                                    [](const Parameter& p) { return p.section == "plane"; });
+    std::vector<Parameter> scenery = sceneryParameters();
+    table.insert(plane, std::make_move_iterator(scenery.begin()),
+                 std::make_move_iterator(scenery.end()));
+    return table;
 }
 
 }  // namespace quaternia

@@ -518,8 +518,24 @@ ParameterValue checkedValue(const Parameter& p, const ParameterValue& value) {
     throwWrongType(p, value);
 }
 
+std::optional<std::string> pastTheLights(std::string_view name) {
+    // "lightN" or "lightN.key" with N a number past the last light section.
+    if (name.substr(0, 5) != "light") return std::nullopt;
+    std::string_view digits = name.substr(5);
+    digits = digits.substr(0, digits.find('.'));
+    if (digits.empty() || digits.size() > 6 ||
+        digits.find_first_not_of("0123456789") != std::string_view::npos)
+        return std::nullopt;
+    if (std::stoi(std::string(digits)) <= kExtraLights) return std::nullopt;
+    return "too many lights: [light" + std::string(digits) + "] is past the limit of " +
+           std::to_string(kExtraLights) + " lights besides the key light ([light1] .. [light" +
+           std::to_string(kExtraLights) + "])";
+}
+
 void setParameter(Scene& scene, std::string_view name, const ParameterValue& value) {
     const Parameter* p = findParameter(name);
+    if (p == nullptr && pastTheLights(name))
+        throw UserError(std::string(name), *pastTheLights(name));
     if (p == nullptr)
         throw UserError(std::string(name), "unknown key '" + std::string(name) +
                                                "' (did you mean '" + nearestParameterName(name) +

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -92,6 +93,10 @@ Scene defaultScene();
 // int64_t). Throws UserError(parameter.name(), ...) for a wrong type, a vector of the wrong
 // length, NaN or infinity, a value out of range, or a word that is not one of the choices.
 ParameterValue checkedValue(const Parameter& parameter, const ParameterValue& value);
+
+// The message for a key or section of a light past the last one ("light8", "light9.kind"):
+// nothing for any other name.
+std::optional<std::string> pastTheLights(std::string_view name);
 
 // Finds `name`, checks `value` and applies it. Throws UserError(name, ...): for an unknown
 // name with the nearest valid one, "unknown key 'render.widht' (did you mean 'render.width'?)",

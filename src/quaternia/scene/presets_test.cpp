@@ -37,7 +37,8 @@ TEST(Presets, EachIsNamedOnceDescribedAndValidThroughTheTable) {
     for (const Preset& preset : scenePresets())
         order.push_back(preset.name);
     EXPECT_EQ(order, (std::vector<std::string>{"rabbit", "dendrite", "basilica", "4d-blob", "cubic",
-                                               "two-sided", "hidden-turn", "orbit"}));
+                                               "two-sided", "studio", "chrome", "glass",
+                                               "hidden-turn", "orbit"}));
 }
 
 TEST(Presets, RabbitIsTheSceneWithItsKeysSetByHand) {

@@ -119,8 +119,57 @@ struct ShadingSettings {
     Color backgroundTop, backgroundBottom;
     Color fogColor;
     double fogDensity = 0;  // per unit of distance; 0: no fog
+    // A glow about the set: a camera ray that passes at distance d takes glowColor with opacity
+    // min(1, glowIntensity exp(-d / glowRadius)), d the least estimate along it; 0: none.
+    Color glowColor;
+    double glowIntensity = 0;
+    double glowRadius = 0;
     double gamma = 0;
     double exposure = 0;
+};
+
+// [light1] .. [light7]: lights besides the key light of [shading], each its own kind, colour,
+// intensity and shadows. A light's radius (point and spot, world units) or angular radius
+// (directional, degrees) makes its shadows soft: the penumbra of a light of that size.
+struct LightSettings {
+    bool enabled = false;
+    LightKind kind = LightKind::Directional;
+    Vector3d direction;  // towards a directional light
+    Vector3d position;   // of a point or spot light
+    Color color;
+    double intensity = 0;  // times color; point and spot: over distance squared
+    Vector3d spotTarget;
+    double spotAngle = 0;     // half-angle of the spot's cone, degrees
+    double spotSoftness = 0;  // fraction of spotAngle over which its edge fades
+    Shadows shadows = Shadows::Soft;
+    double radius = 0;         // point and spot: the light's radius, world units
+    double angularRadius = 0;  // directional: the light's angular radius, degrees
+};
+// Lights of the scene: the key light and at most this many more.
+inline constexpr int kExtraLights = 7;
+
+// [material]: the set's surface beyond its colour. Reflectivity is the reflectance at normal
+// incidence (Schlick's Fresnel raises it towards 1 at grazing angles); transparency the part of
+// the light that is not reflected which enters the set as through glass (index of refraction
+// ior, exact dielectric Fresnel, Snell's law, total internal reflection, Beer-Lambert absorption
+// inside). Rays split at every surface up to maxDepth bounces.
+struct MaterialSettings {
+    double reflectivity = 0;  // in [0, 1]
+    double roughness = 0;     // glossy reflection: spread of the reflected rays
+    double transparency = 0;  // in [0, 1]
+    double ior = 1;           // index of refraction, at least 1
+    Color absorption;         // per unit of distance inside, per channel (Beer-Lambert)
+    int maxDepth = 0;         // bounces (reflections, refractions) a path may take
+    int insideSteps = 0;      // fixed steps across the bounding sphere's diameter inside the set
+};
+
+// [ground]: an optional horizontal plane y = height under the set.
+struct GroundSettings {
+    bool enabled = false;
+    double height = 0;
+    Color color;
+    double reflectivity = 0;     // at normal incidence (Schlick's Fresnel)
+    bool shadowCatcher = false;  // drawn only where shadowed, as alpha over the background
 };
 
 // `quaternia plane`: 2D images (plane_render.h). The filled Julia set K_c with smooth escape
@@ -190,6 +239,9 @@ struct Scene {
     CameraSettings camera;
     RenderSettings render;
     ShadingSettings shading;
+    std::array<LightSettings, kExtraLights> lights;
+    MaterialSettings material;
+    GroundSettings ground;
     PlaneSettings plane;
     MeshSettings mesh;
     OrbitSettings orbit;

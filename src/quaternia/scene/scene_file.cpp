@@ -67,6 +67,8 @@ void applyEntry(Scene& scene, const Entry& entry, const std::string& sourceName)
         throw UserError(entry.name, at + "'" + entry.name + "' must be a section: write [" +
                                         entry.name + "] above its keys");
     const Parameter* p = findParameter(entry.name);
+    if (p == nullptr && pastTheLights(entry.name))
+        throw UserError(entry.name, at + *pastTheLights(entry.name));
     if (p == nullptr && entry.value->is_table() && entry.name.find('.') == std::string::npos)
         throw UserError(entry.name, at + "unknown section [" + entry.name + "] (did you mean [" +
                                         nearestSectionName(entry.name) + "]?)");

@@ -40,6 +40,7 @@ struct CameraMarchLanes {
     hn::Mask<D> relaxing;  // all lanes where steps are over-relaxed, else none
     bool spreads;          // the rays carry a cone's radius at t = 0 (RayBatch::spread)
     bool cone;
+    bool closest;  // CameraMarch::closest: the least estimate, in RayLanes::visibility
 
     CameraMarchLanes(D d, const CameraMarch& march, const RayBatch& rays)
         : zero(hn::Zero(d)),
@@ -54,7 +55,8 @@ struct CameraMarchLanes {
           // Cones step plainly (their steps are already short of the estimate).
           relaxing(hn::FirstN(d, march.cone || !(march.relaxation > 1) ? 0 : hn::Lanes(d))),
           spreads(march.cone && !rays.spread.empty()),
-          cone(march.cone) {}
+          cone(march.cone),
+          closest(march.closest) {}
 };
 
 // Where a camera ray stands before its step: the point before (tOutside), its estimate
@@ -136,6 +138,12 @@ HWY_INLINE void stepCameraLanes(D d, const CameraMarchLanes<D>& c, RayLanes<T>& 
               rayLanes.lastStep + o);
     hn::Store(confirming, d, rayLanes.confirming + o);
     hn::Store(steps, d, rayLanes.steps + o);
+    // The camera rays leave `visibility` alone: it holds the least estimate where asked for.
+    if (c.closest) {
+        const V closest = hn::Load(d, rayLanes.visibility + o);
+        hn::Store(hn::IfThenElse(live, hn::Min(closest, distance), closest), d,
+                  rayLanes.visibility + o);
+    }
 }
 
 // The TraceResults of the rays that ended this step (ends), whose lanes take the next rays of
@@ -149,6 +157,7 @@ HWY_INLINE void finishCameraRays(CameraEndLanes<T>& ends, bool cone, RayLanes<T>
         TraceResult& r = results[size_t(rayLanes.ray[lane])];
         r.steps = int(ends.steps[lane]);
         r.t = ends.t[lane];
+        r.closest = float(rayLanes.visibility[lane]);
         r.end = ends.endOf(lane);
         if (r.end == TraceEnd::Inside) {
             r.tOutside = ends.tOutside[lane];

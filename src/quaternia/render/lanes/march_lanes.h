@@ -144,6 +144,9 @@ struct CameraMarch {
     // steps stay at least (epsilon - 1) radii long): no confirmation. A miss before maxSteps
     // means no ray inside the cone meets the set before tFar.
     bool cone = false;
+    // Whether each ray's result records the least estimate met on the way (TraceResult::
+    // closest), for the glow.
+    bool closest = false;
 };
 enum class TraceEnd : uint8_t { Miss, Inside, Grazing };
 struct TraceResult {
@@ -152,6 +155,8 @@ struct TraceResult {
     double tOutside = 0;  // the last point known outside (t itself for a Grazing ray; the
                           // point before for a Grazing cone)
     int steps = 0;
+    // With CameraMarch::closest: the least distance estimate along the ray, at most 1.
+    float closest = 1;
 };
 void traceCameraRays(const LaneFractal& fractal, const CameraMarch& march, const RayBatch& rays,
                      std::vector<TraceResult>& results, LaneCounters& counters);

@@ -1,0 +1,46 @@
+// The scene around the set on the command line: the looks render, and bad values of the
+// lights, the material and the ground are one line, exit 2, and no file.
+#include "cmd/cli_fixture.h"
+
+namespace quaternia {
+namespace {
+
+using SceneryCli = testing::CliFixture;
+using testing::CommandResult;
+
+TEST_F(SceneryCli, LooksRenderAndNameTheirLights) {
+    for (const char* look : {"studio", "chrome", "glass"}) {
+        const CommandResult r = run(std::string("render --preset ") + look +
+                                    " --width 48 --height 32 -o " + output("look.png"));
+        EXPECT_EQ(r.exitCode, 0) << look << ": " << r.err;
+    }
+}
+
+TEST_F(SceneryCli, MoreLightsThanTheLimitIsOneLine) {
+    CommandResult r = run("render --set light8.enabled=true -o " + output("out.png"));
+    expectUserError(r, "too many lights: [light8] is past the limit of 7");
+    const std::string scene = write("lights.toml", "[light12]\nenabled = true\n").string();
+    r = run("render " + scene + " -o " + output("out.png"));
+    expectUserError(r, "too many lights: [light12]");
+}
+
+TEST_F(SceneryCli, OutOfRangeMaterialsAndLightsAreOneLine) {
+    expectUserError(run("render --set material.ior=0.9 -o " + output("out.png")),
+                    "material.ior = 0.9 is out of range [1, 4]");
+    expectUserError(run("render --set material.reflectivity=1.5 -o " + output("out.png")),
+                    "material.reflectivity = 1.5 is out of range [0, 1]");
+    expectUserError(run("render --set ground.reflectivity=-0.1 -o " + output("out.png")),
+                    "ground.reflectivity");
+    expectUserError(run("render --set light3.intensity=-2 -o " + output("out.png")),
+                    "light3.intensity = -2");
+    expectUserError(run("render --set light1.kind=laser -o " + output("out.png")), "light1.kind");
+}
+
+TEST_F(SceneryCli, ScalarEngineRefusesPathsInOneLine) {
+    const CommandResult r =
+        run("render --set render.engine=scalar --set ground.enabled=true -o " + output("out.png"));
+    expectUserError(r, "ground.enabled needs the simd engine");
+}
+
+}  // namespace
+}  // namespace quaternia

@@ -1,0 +1,112 @@
+// The table entries of the scene around the set: the lights besides the key light
+// ([light1] .. [light7], each section built by the same function), the set's material
+// ([material]) and the ground plane ([ground]).
+#include <string>
+
+#include "quaternia/scene/parameter_builders.h"
+
+namespace quaternia::parameter_builders {
+namespace {
+
+std::vector<std::pair<std::string, LightKind>> lightKinds() {
+    return {{"directional", LightKind::Directional},
+            {"point", LightKind::Point},
+            {"spot", LightKind::Spot}};
+}
+
+std::vector<std::pair<std::string, Shadows>> shadowKinds() {
+    return {{"soft", Shadows::Soft}, {"hard", Shadows::Hard}, {"none", Shadows::None}};
+}
+
+// [lightN]: light N besides the key light; off until enabled.
+void appendLight(std::vector<Parameter>& table, std::size_t index) {
+    using G = LightSettings;
+    const std::string section = "light" + std::to_string(index + 1);
+    const LightSlot slot{index};
+    table.push_back(booleanParameter(section, "enabled", slot, &G::enabled, false,
+                                     "Whether this light shines (lights besides the key light of "
+                                     "[shading]; at most 7)"));
+    table.push_back(choiceParameter(section, "kind", slot, &G::kind, "point", lightKinds(),
+                                    "directional (from direction, infinitely far), point (at "
+                                    "position, inverse-square falloff) or spot (a point light "
+                                    "shining into a cone towards spot_target)"));
+    table.push_back(vectorParameter(section, "direction", slot, &G::direction, {0.5, 0.6, 0.4},
+                                    -1e3, 1e3,
+                                    "Direction towards a directional light; any length"));
+    table.push_back(vectorParameter(section, "position", slot, &G::position, {4.0, 4.0, -3.0}, -1e3,
+                                    1e3, "Position of a point or spot light"));
+    table.push_back(vectorParameter(section, "color", slot, &G::color, {1.0, 1.0, 1.0}, 0, 100,
+                                    "Linear RGB colour of the light"));
+    table.push_back(realParameter(section, "intensity", slot, &G::intensity, 20, 0, 1e6,
+                                  "Multiplies color; point and spot lights give color x "
+                                  "intensity / distance^2"));
+    table.push_back(vectorParameter(section, "spot_target", slot, &G::spotTarget, {0.0, 0.0, 0.0},
+                                    -1e3, 1e3, "The point a spot light aims at"));
+    table.push_back(realParameter(section, "spot_angle", slot, &G::spotAngle, 25, 0.1, 90,
+                                  "Half-angle of a spot light's cone in degrees"));
+    table.push_back(realParameter(section, "spot_softness", slot, &G::spotSoftness, 0.2, 0, 1,
+                                  "Fraction of spot_angle over which the spot's edge fades out"));
+    table.push_back(choiceParameter(section, "shadows", slot, &G::shadows, "soft", shadowKinds(),
+                                    "Shadows of this light: soft (the penumbra of its radius), "
+                                    "hard or none"));
+    table.push_back(realParameter(section, "radius", slot, &G::radius, 0.3, 0, 1e3,
+                                  "Radius of a point or spot light in world units: the size of "
+                                  "its soft shadows' penumbrae (0 gives hard shadows)"));
+    table.push_back(realParameter(section, "angular_radius", slot, &G::angularRadius, 2, 0, 45,
+                                  "Angular radius of a directional light in degrees (the sun's "
+                                  "is 0.27): the size of its soft shadows' penumbrae"));
+}
+
+}  // namespace
+
+std::vector<Parameter> sceneryParameters() {
+    using S = Scene;
+    using M = MaterialSettings;
+    using G = GroundSettings;
+    std::vector<Parameter> table;
+    for (std::size_t i = 0; i < std::size_t(kExtraLights); ++i)
+        appendLight(table, i);
+    const std::vector<Parameter> rest = {
+        // [material]
+        realParameter("material", "reflectivity", &S::material, &M::reflectivity, 0, 0, 1,
+                      "Reflectance of the surface at normal incidence, rising to 1 at grazing "
+                      "angles (Schlick's Fresnel); 1 is a mirror"),
+        realParameter("material", "roughness", &S::material, &M::roughness, 0, 0, 1,
+                      "Glossy reflection: the spread of reflected rays (0 is a sharp mirror); "
+                      "the pixel's samples share it out"),
+        realParameter("material", "transparency", &S::material, &M::transparency, 0, 0, 1,
+                      "Part of the light not reflected that enters the set as through glass "
+                      "(refraction by ior); 0 is opaque"),
+        realParameter("material", "ior", &S::material, &M::ior, 1.5, 1, 4,
+                      "Index of refraction of a transparent set (glass 1.5, water 1.33, "
+                      "diamond 2.42)"),
+        vectorParameter("material", "absorption", &S::material, &M::absorption, {0.0, 0.0, 0.0}, 0,
+                        1000,
+                        "Absorption per unit of distance inside a transparent set, per RGB "
+                        "channel (Beer-Lambert: exp(-absorption x length) passes)"),
+        integerParameter("material", "max_depth", &S::material, &M::maxDepth, 4, 1, 16,
+                         "Bounces (reflections and refractions) a path may take; what is left "
+                         "after them sees the background"),
+        integerParameter("material", "inside_steps", &S::material, &M::insideSteps, 128, 8, 4096,
+                         "Fixed steps across the set's bounding sphere that refracted rays take "
+                         "inside the set (no distance estimate holds inside); gaps narrower than "
+                         "a step are crossed as glass"),
+        // [ground]
+        booleanParameter("ground", "enabled", &S::ground, &G::enabled, false,
+                         "Whether a horizontal ground plane lies under the set"),
+        realParameter("ground", "height", &S::ground, &G::height, -1.2, -1e3, 1e3,
+                      "The plane's height: the plane y = height"),
+        vectorParameter("ground", "color", &S::ground, &G::color, {0.5, 0.5, 0.5}, 0, 100,
+                        "Linear RGB colour of the ground"),
+        realParameter("ground", "reflectivity", &S::ground, &G::reflectivity, 0, 0, 1,
+                      "Reflectance of the ground at normal incidence, rising to 1 at grazing "
+                      "angles (Schlick's Fresnel)"),
+        booleanParameter("ground", "shadow_catcher", &S::ground, &G::shadowCatcher, false,
+                         "Draw the ground only where the set shadows it, as alpha over the "
+                         "background (for compositing)"),
+    };
+    table.insert(table.end(), rest.begin(), rest.end());
+    return table;
+}
+
+}  // namespace quaternia::parameter_builders
