@@ -119,7 +119,7 @@ void LaneTileRenderer::sampleRays(const Tile& tile, int k) {
             })) {
             continue;
         }
-        if (samples_ == 1 && !camera_->thinLens() && !bypassing_) {
+        if (samples_ == 1 && !camera_->thinLens()) {
             rowRays(tile, py, blockRow);
         } else {
             sampleRowRays(tile, py, k);
@@ -192,12 +192,13 @@ void LaneTileRenderer::rowRays(const Tile& tile, int py, const double* blockStar
     RowRay* out = rowRays_.data();
     constexpr double kMissed = std::numeric_limits<double>::infinity();
     for (int block = 0; block < blocks;) {
-        if (blockStart[block] == kMissed) {
+        // Where rays that skip the set still count (bypassing_), every block's.
+        if (blockStart[block] == kMissed && !bypassing_) {
             ++block;
             continue;
         }
         const int first = block * kConeBlock;
-        while (block < blocks && blockStart[block] != kMissed)
+        while (block < blocks && (blockStart[block] != kMissed || bypassing_))
             ++block;
         const int end = std::min(width, block * kConeBlock);
         for (int i = first; i < end; ++i) {
@@ -275,7 +276,7 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
     hitNormals(stats);
     aimShadowRays();
     marchShadowRays(stats);
-    if (shader_->occlusionEnabled()) {
+    if (occlusion()) {
         occlusionPoints_.clear();
         for (size_t h = 0; h < hits_.size(); ++h) {
             for (int k = 1; k <= Shader::kOcclusionSamples; ++k)
@@ -369,7 +370,7 @@ void LaneTileRenderer::sampleSurfaces() {
             visibility = shader_->visibilityFromMarch(shadowVisibility_[nextShadow++]);
         }
         double occlusion = 1;
-        if (shader_->occlusionEnabled()) {
+        if (this->occlusion()) {
             occlusion = shader_->ambientFromOpenness(shader_->occlusionFromEstimates(
                 occlusionDistances_.data() + h * Shader::kOcclusionSamples));
         }

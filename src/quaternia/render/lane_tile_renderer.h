@@ -69,6 +69,10 @@ class LaneTileRenderer {
     // ground, the camera rays that skip the set (their cone or the bounding sphere missed) go
     // to bypass_.
     bool scenery_ = false;
+    // Whether hits_ are those of reflected or refracted rays: lit without ambient occlusion
+    // (a reflection's creases cost as much as the camera's and show far less).
+    bool secondaryWave_ = false;
+    bool occlusion() const { return shader_->occlusionEnabled() && !secondaryWave_; }
     bool bypassing_ = false;  // the ground or the glow: rays that skip the set still count
     struct BypassRay {
         Ray ray;
@@ -135,8 +139,8 @@ class LaneTileRenderer {
     // Inside waves: per path, the fixed step index, the bracket of the exit, bisection rounds.
     PointBatch insidePoints_;
     std::vector<PointEstimate> insideEstimates_;
-    std::vector<double> insideLow_, insideHigh_, insideFar_;
-    std::vector<size_t> marchedPaths_;
+    std::vector<double> insideLow_, insideHigh_, insideFar_, insideDistances_;
+    std::vector<size_t> marchedPaths_, insideActive_;
     std::vector<double> groundKeyVisibility_, groundOtherVisibility_;
     std::vector<Color> groundColor_;
     std::vector<KeyLight> otherLights_;

@@ -65,19 +65,19 @@ void LaneTileRenderer::tracePaths(std::vector<PixelSamples>& pixels, LaneTileSta
     sampleResults_.clear();
     outside_.clear();
     inside_.clear();
+    sampleResults_.reserve(rays_.size() + bypass_.size());
+    outside_.reserve(rays_.size() + bypass_.size());
     auto startSample = [&](const Ray& ray, int pixel, double tNear, int block) {
-        SampleResult result;
+        SampleResult& result = sampleResults_.emplace_back();
         result.pixel = pixel;
         result.key = sampleKey_ >= 0 ? sampleKey_ : pixels[size_t(pixel)].samples;
-        sampleResults_.push_back(result);
-        PathRay path;
+        PathRay& path = outside_.emplace_back();
         path.ray = ray;
         path.tNear = tNear;
         path.sample = int(sampleResults_.size() - 1);
         path.weight = Color(1, 1, 1);
         path.camera = true;
         path.block = block;
-        outside_.push_back(path);
     };
     for (size_t i = 0; i < rays_.size(); ++i) {
         startSample(Ray{Point3d(rays_.ox[i], rays_.oy[i], rays_.oz[i]),
@@ -86,17 +86,24 @@ void LaneTileRenderer::tracePaths(std::vector<PixelSamples>& pixels, LaneTileSta
     }
     // The rays that skip the set: never marched (tNear infinite), but for the glow, which
     // reaches past the bounding sphere.
-    const double bypassNear = shader_->glowIntensity() > 0 ? 0.0 : kInfinity;
-    for (const BypassRay& b : bypass_)
-        startSample(b.ray, b.pixel, bypassNear, -1);
+    const bool glowing = shader_->glowIntensity() > 0;
+    const double bypassNear = glowing ? 0.0 : kInfinity;
+    for (const BypassRay& b : bypass_) {
+        // Without the glow, a camera ray that skips the set and the ground sees the pixel's
+        // background: nothing to follow.
+        if (glowing || groundDistance(b.ray) < kInfinity)
+            startSample(b.ray, b.pixel, bypassNear, -1);
+    }
     const bool cylinders = shadowCylinders_;
     for (bool first = true; !outside_.empty() || !inside_.empty(); first = false) {
         nextOutside_.clear();
         nextInside_.clear();
         // Shadow cylinders group a block's camera rays: the first wave only.
         shadowCylinders_ = cylinders && first;
+        secondaryWave_ = !first;
         if (!outside_.empty()) traceOutsideWave(stats);
         shadowCylinders_ = cylinders;
+        secondaryWave_ = false;
         if (!inside_.empty()) traceInsideWave(stats);
         outside_.swap(nextOutside_);
         inside_.swap(nextInside_);
@@ -210,8 +217,18 @@ void LaneTileRenderer::traceOutsideWave(LaneTileStats& stats) {
         }
     }
     if (!hits_.empty()) {
-        // hits_[h].t is the length of the whole path (its footprint's).
-        shadeHits(stats);
+        // hits_[h].t is the length of the whole path (its footprint's). A surface that
+        // reflects or refracts all light (a mirror, clear glass) shows none of its own: its
+        // hits need their normals but no shadow rays, occlusion or lights.
+        if (material_.transparency < 1 && material_.reflectivity < 1) {
+            shadeHits(stats);
+        } else {
+            hitNormals(stats);
+            surfaces_.resize(hits_.size());
+            std::fill(surfaces_.red.begin(), surfaces_.red.end(), 0.0f);
+            std::fill(surfaces_.green.begin(), surfaces_.green.end(), 0.0f);
+            std::fill(surfaces_.blue.begin(), surfaces_.blue.end(), 0.0f);
+        }
         shadeSetHits();
     }
     if (!groundHits_.empty()) shadeGround(stats);
@@ -288,37 +305,50 @@ void LaneTileRenderer::traceInsideWave(LaneTileStats& stats) {
     lo.assign(count, 0.0);
     hi.assign(count, -1.0);
     far.resize(count);
-    std::vector<size_t> active, next;
+    std::vector<size_t>& active = insideActive_;
+    active.clear();
     for (size_t p = 0; p < count; ++p) {
         auto interval = intersectSphere(inside_[p].ray, boundingRadius_);
         far[p] = interval ? std::max(0.0, interval->tFar) : 0.0;
         active.push_back(p);
     }
+    // Step by step, the rays still inside in one batch each (a batch of every step's points at
+    // once, to the sphere's far side, took 1.6x as long: the points past the exits cost more
+    // than the batches saved). Membership alone (the distance is 0 exactly inside K_N):
+    // estimateDistances skips the orbit's bookkeeping.
+    std::vector<double>& distances = insideDistances_;
+    PointBatch& points = insidePoints_;
     while (!active.empty()) {
-        insidePoints_.clear();
-        for (size_t p : active)
-            insidePoints_.push(inside_[p].ray.at(std::min(lo[p] + h, far[p])));
-        estimatePoints(lanes_, insidePoints_, insideEstimates_, stats.shading);
-        next.clear();
-        for (size_t i = 0; i < active.size(); ++i) {
+        const size_t n = active.size();
+        points.x.resize(n), points.y.resize(n), points.z.resize(n);
+        for (size_t i = 0; i < n; ++i) {
+            const Ray& ray = inside_[active[i]].ray;
+            const double t = std::min(lo[active[i]] + h, far[active[i]]);
+            points.x[i] = ray.origin.x + ray.direction.x * t;
+            points.y[i] = ray.origin.y + ray.direction.y * t;
+            points.z[i] = ray.origin.z + ray.direction.z * t;
+        }
+        estimateDistances(lanes_, points, distances, stats.shading);
+        size_t kept = 0;
+        for (size_t i = 0; i < n; ++i) {
             const size_t p = active[i];
             const double t = std::min(lo[p] + h, far[p]);
-            if (!insideEstimates_[i].inside || t >= far[p]) {
+            if (distances[i] > 0 || t >= far[p]) {
                 hi[p] = t;
             } else {
                 lo[p] = t;
-                next.push_back(p);
+                active[kept++] = p;
             }
         }
-        active.swap(next);
+        active.resize(kept);
     }
     for (int round = 0; round < kExitBisections; ++round) {
         insidePoints_.clear();
         for (size_t p = 0; p < count; ++p)
             insidePoints_.push(inside_[p].ray.at(0.5 * (lo[p] + hi[p])));
-        estimatePoints(lanes_, insidePoints_, insideEstimates_, stats.shading);
+        estimateDistances(lanes_, insidePoints_, distances, stats.shading);
         for (size_t p = 0; p < count; ++p)
-            (insideEstimates_[p].inside ? lo[p] : hi[p]) = 0.5 * (lo[p] + hi[p]);
+            (distances[p] > 0 ? hi[p] : lo[p]) = 0.5 * (lo[p] + hi[p]);
     }
     // The outward normal where each ray leaves, from the estimate there.
     insidePoints_.clear();

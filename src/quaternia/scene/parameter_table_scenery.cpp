@@ -87,7 +87,7 @@ std::vector<Parameter> sceneryParameters() {
         integerParameter("material", "max_depth", &S::material, &M::maxDepth, 4, 1, 16,
                          "Bounces (reflections and refractions) a path may take; what is left "
                          "after them sees the background"),
-        integerParameter("material", "inside_steps", &S::material, &M::insideSteps, 128, 8, 4096,
+        integerParameter("material", "inside_steps", &S::material, &M::insideSteps, 32, 8, 4096,
                          "Fixed steps across the set's bounding sphere that refracted rays take "
                          "inside the set (no distance estimate holds inside); gaps narrower than "
                          "a step are crossed as glass"),
