@@ -90,6 +90,24 @@ scene algebra-coquaternion-360p --width 640 --height 360 "${one_spp[@]}" \
   --set 'fractal.algebra="coquaternion"'
 scene algebra-biquaternion-360p --width 640 --height 360 "${one_spp[@]}" \
   --set 'fractal.algebra="biquaternion"' --set 'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0]'
+# Materials and lights (issue 20), 1 sample at 1080p, each beside the plain frame on the same
+# ISA (the goals: a reflective bounce with the ground at most 2x the plain frame, glass at most
+# 4x): the default scene with the ground and reflectivity 0.6, one bounce; the looks (presets
+# studio, chrome, glass: ground, extra light, mirror, glass); the glow; two extra lights.
+for target in best avx2; do
+  isa=$target scene "plain-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}"
+  isa=$target scene "reflection-ground-1080p-$target" --width 1920 --height 1080 \
+    "${one_spp[@]}" --set ground.enabled=true --set material.reflectivity=0.6 \
+    --set material.max_depth=1
+  for look in studio chrome glass; do
+    isa=$target scene "look-$look-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
+      --preset "$look"
+  done
+  isa=$target scene "glow-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
+    --set shading.glow_intensity=1
+  isa=$target scene "three-lights-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
+    --set light1.enabled=true --set light2.enabled=true --set light2.kind=directional
+done
 [ -n "${rows:-}" ] && exit 0
 # Films (`quaternia animate`): the hidden-turn preset at 1 sample on 2 threads, frames per second
 # end to end (every PNG written, the process start left out) and of the render loop alone (the

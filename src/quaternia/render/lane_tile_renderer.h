@@ -131,6 +131,11 @@ class LaneTileRenderer {
     };
     std::vector<GroundHit> groundHits_;
     void shadeGround(LaneTileStats& stats);
+    // Leaves out of shadowRays_ (and shadowHit_) the ground's shadow rays of a directional
+    // light that a cone about each block's rays proves fully lit.
+    void clearLitGroundShadows(const LightSource& light, LaneTileStats& stats);
+    std::vector<int> groundBlock_;
+    SurfaceBatch groundSurfaces_;
     // The lights of [light1] .. [light7] at the hits of hits_, added to surfaces_' colours.
     void lightOthers(LaneTileStats& stats);
     // Shadow-ray visibility of `light` from points (origins of shadowRays_ as aimed by the

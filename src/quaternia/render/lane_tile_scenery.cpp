@@ -176,7 +176,10 @@ void LaneTileRenderer::traceOutsideWave(LaneTileStats& stats) {
             ground_.shadowCatcher && !path.camera ? kInfinity : groundDistance(path.ray);
         // The glow reaches glowReach past the bounding sphere (exp(-8) of its opacity).
         const double glowReach = glowing ? 8 * shader_->glowRadius() : 0.0;
-        auto interval = intersectSphere(path.ray, boundingRadius_ + glowReach);
+        // (A camera ray that skips the set, tNear infinite, needs no sphere.)
+        auto interval = path.tNear == kInfinity
+                            ? std::nullopt
+                            : intersectSphere(path.ray, boundingRadius_ + glowReach);
         const double near = interval ? std::max(interval->tNear, path.tNear) : kInfinity;
         const double far = interval ? std::min(interval->tFar, ground) : -1;
         if (near <= far) {
@@ -406,6 +409,7 @@ void LaneTileRenderer::shadeGround(LaneTileStats& stats) {
             shadowRays_.push(ray, interval->tNear, interval->tFar);
             shadowHit_.push_back(int(g));
         }
+        clearLitGroundShadows(light, stats);
         marchShadowsOf(light, stats);
         for (size_t r = 0; r < shadowHit_.size(); ++r)
             out[size_t(shadowHit_[r])] = shader_->visibilityOf(light, shadowVisibility_[r]);
@@ -421,32 +425,44 @@ void LaneTileRenderer::shadeGround(LaneTileStats& stats) {
                 outside_[groundHits_[g].path].ray.direction, groundOtherVisibility_[g]);
         }
     }
+    // The ground's own light, lit in lanes as the set's hits are (lightSurfaces).
+    SurfaceBatch& lit = groundSurfaces_;
+    lit.resize(count);
+    for (size_t g = 0; g < count; ++g) {
+        const Vector3d n = normalOf(g);
+        const Vector3d& d = outside_[groundHits_[g].path].ray.direction;
+        const KeyLight key = shader_->keyLight(pointOf(g));
+        const bool facing = Shader::keyDiffuse(n, key) > 0;
+        lit.nx[g] = float(n.x), lit.ny[g] = float(n.y), lit.nz[g] = float(n.z);
+        lit.dx[g] = float(d.x), lit.dy[g] = float(d.y), lit.dz[g] = float(d.z);
+        lit.lx[g] = float(key.toLight.x), lit.ly[g] = float(key.toLight.y),
+        lit.lz[g] = float(key.toLight.z);
+        lit.keyScale[g] = float(key.scale);
+        lit.albedoR[g] = float(ground_.color.x), lit.albedoG[g] = float(ground_.color.y),
+        lit.albedoB[g] = float(ground_.color.z);
+        // Where the key light is behind the plane: no light, and no shadow to catch.
+        lit.visibility[g] = facing ? float(groundKeyVisibility_[g]) : 0.0f;
+        if (!facing) groundKeyVisibility_[g] = 1;
+        lit.occlusion[g] = 1;
+    }
+    lightSurfaces(lightConstants_, lit);
     for (size_t g = 0; g < count; ++g) {
         const PathRay& path = outside_[groundHits_[g].path];
         SampleResult& sample = sampleResults_[size_t(path.sample)];
         const double t = groundHits_[g].t;
-        const Point3d x = pointOf(g);
         const Vector3d n = normalOf(g);
-        const KeyLight key = shader_->keyLight(x);
-        const double visibility = Shader::keyDiffuse(n, key) > 0 ? groundKeyVisibility_[g] : 1.0;
         if (path.camera) {
             sample.object = 2;
             sample.depth = t;
             sample.normal = n;
             if (ground_.shadowCatcher) {
                 // Only the shadow: black, as opaque as the key light is hidden.
-                sample.alpha = 1 - visibility;
+                sample.alpha = 1 - groundKeyVisibility_[g];
                 continue;
             }
             sample.alpha = 1;
         }
-        SurfaceSample surface;
-        surface.normal = n;
-        surface.toLight = key.toLight;
-        surface.keyScale = key.scale;
-        surface.albedo = ground_.color;
-        surface.visibility = Shader::keyDiffuse(n, key) > 0 ? visibility : 0.0;
-        const Color local = shader_->light(surface, path.ray) + groundColor_[g];
+        const Color local = Color(lit.red[g], lit.green[g], lit.blue[g]) + groundColor_[g];
         const double cosine = std::abs(path.ray.direction.y);
         const double reflected =
             ground_.reflectivity > 0 ? fresnelSchlick(cosine, ground_.reflectivity) : 0.0;
@@ -454,7 +470,7 @@ void LaneTileRenderer::shadeGround(LaneTileStats& stats) {
         sample.color +=
             path.weight * (local * (kept * (1 - reflected)) + shader_->fogColor() * (1 - kept));
         if (reflected > 0) {
-            const Ray ray{x + n * offset, reflect(path.ray.direction, n)};
+            const Ray ray{pointOf(g) + n * offset, reflect(path.ray.direction, n)};
             spawn(path, ray, path.weight * (kept * reflected), path.travelled + t, false);
         }
     }
@@ -504,6 +520,86 @@ void LaneTileRenderer::lightOthers(LaneTileStats& stats) {
             surfaces_.blue[h] += float(added.z);
         }
     }
+}
+
+void LaneTileRenderer::clearLitGroundShadows(const LightSource& light, LaneTileStats& stats) {
+    // The shadow rays of a directional light from the ground points of one block of 4x4 camera
+    // pixels are parallel and start close together. A cone about them, from the nearest origin
+    // along the light, of radius r + s / k at s along it (r holding every origin off its axis,
+    // k the penumbra's sharpness; 0 for hard shadows), marched as the camera's cones are (steps
+    // of the estimate less the radius, ending where the estimate falls below 1.2 radii), proves
+    // where it gets through that every ray of the block passes at h >= t / k from the set at
+    // every t along it: min k h / t >= 1, fully lit, and no ray of it need be marched.
+    // (Most of the ground sees the light past the set's bounding sphere but far from the set.)
+    if (light.kind != LightKind::Directional || shadowHit_.size() < kMinCylinderRays) return;
+    const int width = currentTile_.x1 - currentTile_.x0;
+    const int across = (width + kConeBlock - 1) / kConeBlock;
+    const size_t count = shadowHit_.size();
+    std::vector<int>& block = groundBlock_;
+    block.resize(count);
+    for (size_t r = 0; r < count; ++r) {
+        const PathRay& path = outside_[groundHits_[size_t(shadowHit_[r])].path];
+        const int pixel = sampleResults_[size_t(path.sample)].pixel;
+        block[r] =
+            path.camera ? pixel / width / kConeBlock * across + pixel % width / kConeBlock : -1;
+    }
+    std::vector<int>& order = shadowOrder_;
+    order.resize(count);
+    for (size_t r = 0; r < count; ++r)
+        order[r] = int(r);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return block[size_t(a)] < block[size_t(b)]; });
+    const Vector3d& l = light.direction;
+    cylinders_.clear();
+    cylinderRays_.clear();
+    for (size_t first = 0; first < count;) {
+        size_t end = first + 1;
+        while (end < count && block[size_t(order[end])] == block[size_t(order[first])])
+            ++end;
+        if (block[size_t(order[first])] >= 0 && end - first >= kMinCylinderRays) {
+            Vector3d sum;
+            for (size_t i = first; i < end; ++i)
+                sum += Vector3d(shadowRayOrigin(size_t(order[i])));
+            const Point3d centre(sum / double(end - first));
+            double widest = 0, nearest = std::numeric_limits<double>::infinity(), farthest = 0;
+            for (size_t i = first; i < end; ++i) {
+                const size_t r = size_t(order[i]);
+                const Vector3d offset = shadowRayOrigin(r) - centre;
+                const double along = dot(offset, l);
+                widest = std::max(widest, dot(offset, offset) - along * along);
+                nearest = std::min(nearest, along);
+                farthest = std::max(farthest, along + shadowRays_.tFar[r]);
+            }
+            const double radius =
+                std::sqrt(std::max(0.0, widest)) * (1 + 1e-6) + 1e-9 * boundingRadius_;
+            cylinders_.push(Ray{centre + l * nearest, l}, 0, farthest - nearest);
+            cylinders_.spread.push_back(radius);
+            cylinderRays_.push_back({first, end});
+        }
+        first = end;
+    }
+    if (cylinders_.size() == 0) return;
+    CameraMarch coneMarch = march_;
+    coneMarch.cone = true;
+    coneMarch.epsilon = 1.2;
+    coneMarch.pixelAngle = light.shadows == Shadows::Soft ? 1 / light.softness : 0.0;
+    traceCameraRays(lanes_, coneMarch, cylinders_, cylinderResults_, stats.shading);
+    shadowClear_.assign(count, 0);
+    size_t cleared = 0;
+    for (size_t c = 0; c < cylinders_.size(); ++c) {
+        const TraceResult& result = cylinderResults_[c];
+        if (!(result.end == TraceEnd::Miss && result.steps < march_.maxSteps)) continue;
+        for (size_t i = cylinderRays_[c].first; i < cylinderRays_[c].second; ++i) {
+            shadowClear_[size_t(order[i])] = 1;
+            ++cleared;
+        }
+    }
+    if (cleared == 0) return;
+    shadowRays_.removeFlagged(shadowClear_);
+    size_t kept = 0;
+    for (size_t r = 0; r < count; ++r)
+        if (!shadowClear_[r]) shadowHit_[kept++] = shadowHit_[r];
+    shadowHit_.resize(kept);
 }
 
 }  // namespace quaternia
