@@ -237,6 +237,34 @@ TEST(Ground, ShadowCatcherIsTheShadowAlone) {
     EXPECT_EQ(wrong, 0);
 }
 
+// A light's size makes its shadow's penumbra: under a directional light straight above, the
+// ball's shadow on a shadow catcher has a soft rim (partial alpha) that widens with the light's
+// angular radius, and none with hard shadows.
+TEST(Lights, PenumbraWidensWithTheLightsSize) {
+    auto rim = [](Shadows shadows, double degrees) {
+        Scene scene = darkBall({0, 3, -3});
+        scene.render.alpha = AlphaMode::Coverage;
+        scene.shading.lightDirection = {0, 1, 0};
+        scene.shading.lightIntensity = 1;
+        scene.shading.shadows = shadows;
+        scene.shading.lightAngularRadius = degrees;
+        scene.ground.enabled = true;
+        scene.ground.height = -1.5;
+        scene.ground.shadowCatcher = true;
+        const Image image = render(scene).image;
+        int partial = 0;
+        for (int py = 0; py < kSize; ++py)
+            for (int px = 0; px < kSize; ++px)
+                partial += image.at(px, py).a > 0.05 && image.at(px, py).a < 0.95;
+        return partial;
+    };
+    const int hard = rim(Shadows::Hard, 0), narrow = rim(Shadows::Soft, 2),
+              wide = rim(Shadows::Soft, 10);
+    EXPECT_LT(hard, 40);  // the ball's own outline, anti-aliased by nothing: only its edge
+    EXPECT_GT(narrow, hard + 20);
+    EXPECT_GT(wide, 2 * narrow);
+}
+
 // A second light ([light1]) on the axis adds I / d^2 at the ball's nearest point, as the key
 // light does, in both engines.
 TEST(Lights, ExtraPointLightFallsWithTheInverseSquare) {

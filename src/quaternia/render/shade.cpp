@@ -37,6 +37,11 @@ Shader::Shader(const ShadingSettings& settings, const Fractal& fractal,
     key.intensity = settings.lightIntensity;
     key.shadows = settings.shadows;
     key.softness = settings.shadowSoftness;
+    // A key light of a given size: the penumbra of that size (lightSourceOf).
+    const double size = settings.lightKind == LightKind::Directional
+                            ? std::tan(settings.lightAngularRadius * M_PI / 180)
+                            : settings.lightRadius / std::max(length(settings.lightPosition), 1e-9);
+    if (size > 0) key.softness = 1 / size;
     if (settings.lightKind == LightKind::Spot) {
         key.spotAxis = normalize(settings.spotTarget - settings.lightPosition);
         key.spotCosOuter = std::cos(settings.spotAngle * M_PI / 180);
@@ -128,7 +133,15 @@ std::optional<RayInterval> Shader::shadowInterval(const Ray& ray, const KeyLight
 
 std::optional<RayInterval> Shader::shadowIntervalOf(const Ray& ray, const KeyLight& key,
                                                     const LightSource& light) const {
-    auto interval = intersectSphere(ray, fractal_.boundingRadius());
+    // From outside the bounding sphere (the ground), a soft shadow's penumbra reaches past the
+    // sphere's own shadow: a ray that passes within t / k of the set at t is partly shadowed.
+    // Such rays come within (|origin| + R) / k of the sphere, which is grown by that much.
+    const double radius = fractal_.boundingRadius();
+    const double distance = length(ray.origin);
+    const double grown = light.shadows == Shadows::Soft && distance > radius
+                             ? radius + (distance + radius) / light.softness
+                             : radius;
+    auto interval = intersectSphere(ray, grown);
     if (!interval) return std::nullopt;
     // A point light's distance from the ray's own origin (a shadow origin lies a little off the
     // surface point the key light was taken at).

@@ -149,7 +149,7 @@ class Shader {
     // The marching settings of shadow rays (Shadows::None: no shadow rays at all).
     Shadows shadows() const { return settings_.shadows; }
     double shadowMinimumStep() const;
-    double shadowSoftness() const { return settings_.shadowSoftness; }
+    double shadowSoftness() const { return keySource().softness; }
     // A directional key light's direction (keyLightIsDirectional()).
     const Vector3d& lightDirection() const { return lightDirection_; }
     // Shadow rays: at most kShadowSteps estimates, over-relaxed steps (shadow()).

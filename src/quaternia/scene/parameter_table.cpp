@@ -216,6 +216,15 @@ std::vector<Parameter> coreParameters() {
                         "none"),
         realParameter("shading", "shadow_softness", &S::shading, &H::shadowSoftness, 12, 1, 1000,
                       "Penumbra sharpness k of soft shadows; larger is harder"),
+        realParameter("shading", "light_radius", &S::shading, &H::lightRadius, 0, 0, 1e3,
+                      "Radius of a point or spot key light in world units: soft shadows then "
+                      "have its penumbra (k = its distance from the set's centre / radius); 0 "
+                      "keeps shadow_softness"),
+        realParameter("shading", "light_angular_radius", &S::shading, &H::lightAngularRadius, 0, 0,
+                      45,
+                      "Angular radius of a directional key light in degrees (the sun's is "
+                      "0.27): soft shadows then have its penumbra (k = 1 / tan); 0 keeps "
+                      "shadow_softness"),
         vectorParameter("shading", "fill_direction", &S::shading, &H::fillDirection,
                         {0.6, 0.2, -0.4}, -1e3, 1e3,
                         "Direction towards the fill light in world space; any length"),

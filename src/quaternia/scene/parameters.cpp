@@ -727,6 +727,14 @@ std::string parameterHelp() {
         "fixed-step or z^3+c is taken as a string).\n";
     std::string section;
     for (const auto& p : parameterTable()) {
+        // [light2] .. [light7] are [light1] again: named once.
+        if (p.section.size() > 5 && p.section.substr(0, 5) == "light" && p.section != "light1") {
+            if (p.section != section && p.section == "light2")
+                out += "\n[light2] .. [light" + std::to_string(kExtraLights) +
+                       "]\n  The same keys as [light1], for more lights.\n";
+            section = p.section;
+            continue;
+        }
         if (p.section != section) out += "\n[" + (section = p.section) + "]\n";
         out += "  " + p.name() + " = " + formatValue(p.defaultValue) + "    (" + typeName(p) +
                ", " + describeRange(p) + ")\n      " + p.help + "\n";

@@ -108,6 +108,9 @@ struct ShadingSettings {
     double spotSoftness = 0;    // fraction of spotAngle over which its edge fades
     Shadows shadows = Shadows::Soft;
     double shadowSoftness = 0;  // penumbra sharpness k of DE soft shadows (bigger = harder)
+    // The key light's size, where given (> 0), sets k instead: as LightSettings'.
+    double lightRadius = 0;
+    double lightAngularRadius = 0;
     Vector3d fillDirection;
     Color fillColor;
     double ambient = 0;
