@@ -439,28 +439,36 @@ Point3d LaneTileRenderer::shadowRayOrigin(size_t r) const {
     return Point3d(shadowRays_.ox[r], shadowRays_.oy[r], shadowRays_.oz[r]);
 }
 
-void LaneTileRenderer::pushCylinder(size_t first, size_t end) {
-    const Vector3d light = shader_->lightDirection();
+LaneTileRenderer::RayBundle LaneTileRenderer::bundleOf(size_t first, size_t end,
+                                                       const Vector3d& direction) const {
     Vector3d sum;
     for (size_t k = first; k < end; ++k)
         sum += Vector3d(shadowRayOrigin(size_t(shadowOrder_[k])));
-    const Point3d centre(sum / double(end - first));
+    RayBundle bundle;
+    bundle.centre = Point3d(sum / double(end - first));
     // The widest offset of an origin from the axis, and the axial extent from the nearest
-    // origin to the farthest exit from the bounding sphere.
-    double widest = 0, nearest = std::numeric_limits<double>::infinity();
-    double farthest = -nearest;
+    // origin to the farthest end of a ray.
+    double widest = 0;
+    bundle.nearest = std::numeric_limits<double>::infinity();
+    bundle.farthest = -bundle.nearest;
     for (size_t k = first; k < end; ++k) {
         const size_t r = size_t(shadowOrder_[k]);
-        const Vector3d offset = shadowRayOrigin(r) - centre;
-        const double along = dot(offset, light);
+        const Vector3d offset = shadowRayOrigin(r) - bundle.centre;
+        const double along = dot(offset, direction);
         widest = std::max(widest, dot(offset, offset) - along * along);
-        nearest = std::min(nearest, along);
-        farthest = std::max(farthest, along + shadowRays_.tFar[r]);
+        bundle.nearest = std::min(bundle.nearest, along);
+        bundle.farthest = std::max(bundle.farthest, along + shadowRays_.tFar[r]);
     }
     // A margin for rounding, and never a zero radius.
-    const double radius = std::sqrt(std::max(0.0, widest)) * (1 + 1e-6) + 1e-9 * boundingRadius_;
-    cylinders_.push(Ray{centre + light * farthest, -light}, 0, farthest - nearest);
-    cylinders_.spread.push_back(radius);
+    bundle.radius = std::sqrt(std::max(0.0, widest)) * (1 + 1e-6) + 1e-9 * boundingRadius_;
+    return bundle;
+}
+
+void LaneTileRenderer::pushCylinder(size_t first, size_t end) {
+    const Vector3d light = shader_->lightDirection();
+    const RayBundle b = bundleOf(first, end, light);
+    cylinders_.push(Ray{b.centre + light * b.farthest, -light}, 0, b.farthest - b.nearest);
+    cylinders_.spread.push_back(b.radius);
     cylinderRays_.push_back({first, end});
 }
 

@@ -194,6 +194,14 @@ class LaneTileRenderer {
     Point3d shadowRayOrigin(size_t r) const;
     // The cylinder about the shadow rays shadowOrder_[first, end), into cylinders_.
     void pushCylinder(size_t first, size_t end);
+    // The shadow rays shadowOrder_[first, end) about an axis along `direction` through their
+    // origins' centre: the radius that holds every origin, and the extent along the axis from
+    // the nearest origin to the farthest ray end (each as the offset from the centre).
+    struct RayBundle {
+        Point3d centre;
+        double radius, nearest, farthest;
+    };
+    RayBundle bundleOf(size_t first, size_t end, const Vector3d& direction) const;
     // Shortens each cylinder's rays to where it stopped, and flags in shadowClear_ those it
     // cleared whole; returns how many.
     size_t shortenShadowRays();

@@ -557,23 +557,10 @@ void LaneTileRenderer::clearLitGroundShadows(const LightSource& light, LaneTileS
         while (end < count && block[size_t(order[end])] == block[size_t(order[first])])
             ++end;
         if (block[size_t(order[first])] >= 0 && end - first >= kMinCylinderRays) {
-            Vector3d sum;
-            for (size_t i = first; i < end; ++i)
-                sum += Vector3d(shadowRayOrigin(size_t(order[i])));
-            const Point3d centre(sum / double(end - first));
-            double widest = 0, nearest = std::numeric_limits<double>::infinity(), farthest = 0;
-            for (size_t i = first; i < end; ++i) {
-                const size_t r = size_t(order[i]);
-                const Vector3d offset = shadowRayOrigin(r) - centre;
-                const double along = dot(offset, l);
-                widest = std::max(widest, dot(offset, offset) - along * along);
-                nearest = std::min(nearest, along);
-                farthest = std::max(farthest, along + shadowRays_.tFar[r]);
-            }
-            const double radius =
-                std::sqrt(std::max(0.0, widest)) * (1 + 1e-6) + 1e-9 * boundingRadius_;
-            cylinders_.push(Ray{centre + l * nearest, l}, 0, farthest - nearest);
-            cylinders_.spread.push_back(radius);
+            const RayBundle bundle = bundleOf(first, end, l);
+            cylinders_.push(Ray{bundle.centre + l * bundle.nearest, l}, 0,
+                            bundle.farthest - bundle.nearest);
+            cylinders_.spread.push_back(bundle.radius);
             cylinderRays_.push_back({first, end});
         }
         first = end;
