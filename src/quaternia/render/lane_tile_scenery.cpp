@@ -289,9 +289,12 @@ void LaneTileRenderer::shadeSetHits() {
         }
         if (refracted > 0) {
             // Entering from outside never reflects totally.
+            // From the ray's end, the first point inside (or within epsilon of the surface),
+            // not moved off the ray: a move along the normal would shift the refracted line by
+            // a footprint and lengthen a grazing chord.
             const Vector3d direction = *refract(d, n, 1, material_.ior);
-            const Point3d surface = path.ray.at(t) - n * footprint;
-            spawn(path, Ray{surface, direction}, path.weight * (kept * refracted), travelled, true);
+            spawn(path, Ray{path.ray.at(t), direction}, path.weight * (kept * refracted), travelled,
+                  true);
         }
     }
 }
@@ -373,13 +376,14 @@ void LaneTileRenderer::traceInsideWave(LaneTileStats& stats) {
         const Color weight = path.weight * exponential(material_.absorption * -length);
         const double offset = camera_->pixelFootprint(travelled) + 1e-6 * boundingRadius_;
         const Point3d inner = path.ray.at(lo[p]);
-        const Point3d outer = path.ray.at(hi[p]) + n * offset;
         auto out = refract(d, -n, material_.ior, 1);
         if (!out) {  // total internal reflection
             spawn(path, Ray{inner, reflect(d, n)}, weight, travelled, true);
             continue;
         }
         const double reflectance = fresnelDielectric(dot(d, n), material_.ior, 1);
+        // Out from the escaped point, a little along the way out (it leaves the surface).
+        const Point3d outer = path.ray.at(hi[p]) + *out * offset;
         spawn(path, Ray{outer, *out}, weight * (1 - reflectance), travelled, false);
         spawn(path, Ray{inner, reflect(d, n)}, weight * reflectance, travelled, true);
     }

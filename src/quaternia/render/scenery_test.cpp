@@ -173,6 +173,35 @@ TEST(Glass, BallLensInvertsTheBackground) {
     EXPECT_GT(inverted, checked / 2);
 }
 
+// Clear of refraction (index 1: no Fresnel reflection, no bending), a ball that absorbs
+// passes exp(-absorption x L) of the white background per channel, L the chord of its pixel's
+// ray: Beer-Lambert over the way inside, found by the fixed steps and the bisection.
+TEST(Glass, AbsorbsByBeerLambertAlongTheChord) {
+    Scene scene = darkBall({0, 0, -4});
+    scene.material.transparency = 1;
+    scene.material.ior = 1;
+    scene.material.absorption = {0.5, 1, 2};
+    scene.shading.backgroundTop = scene.shading.backgroundBottom = {1, 1, 1};
+    const RenderResult result = render(scene);
+    const Camera camera(scene.camera, kSize, kSize);
+    int checked = 0;
+    double worst = 0;
+    for (int py = 0; py < kSize; ++py) {
+        for (int px = 0; px < kSize; ++px) {
+            auto hit = ballHit(camera, px, py, 0.05);
+            if (!hit) continue;
+            const double chord = -2 * dot(hit->point, hit->ray.direction);
+            const Rgba& c = result.image.at(px, py);
+            worst = std::max({worst, std::abs(c.r - std::exp(-0.5 * chord)),
+                              std::abs(c.g - std::exp(-1 * chord)),
+                              std::abs(c.b - std::exp(-2 * chord))});
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 1000);
+    EXPECT_LT(worst, 0.01);
+}
+
 // A white furnace: a lossless mirror and clear glass in a white world are white all over.
 TEST(Furnace, LosslessMaterialsInAWhiteWorldStayWhite) {
     for (bool glass : {false, true}) {
