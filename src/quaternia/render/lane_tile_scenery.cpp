@@ -579,10 +579,19 @@ void LaneTileRenderer::clearLitGroundShadows(const LightSource& light, LaneTileS
     size_t cleared = 0;
     for (size_t c = 0; c < cylinders_.size(); ++c) {
         const TraceResult& result = cylinderResults_[c];
-        if (!(result.end == TraceEnd::Miss && result.steps < march_.maxSteps)) continue;
+        const bool whole = result.end == TraceEnd::Miss && result.steps < march_.maxSteps;
+        // The cone's start and where it was last clear: before that, every ray of it is lit
+        // (k h / t >= 1 there), so its own march starts there.
+        const Point3d start(cylinders_.ox[c], cylinders_.oy[c], cylinders_.oz[c]);
         for (size_t i = cylinderRays_[c].first; i < cylinderRays_[c].second; ++i) {
-            shadowClear_[size_t(order[i])] = 1;
-            ++cleared;
+            const size_t r = size_t(order[i]);
+            const double clearTo = result.tOutside - dot(shadowRayOrigin(r) - start, l);
+            if (whole || clearTo >= shadowRays_.tFar[r]) {
+                shadowClear_[r] = 1;
+                ++cleared;
+            } else {
+                shadowRays_.tNear[r] = std::max(shadowRays_.tNear[r], clearTo);
+            }
         }
     }
     if (cleared == 0) return;

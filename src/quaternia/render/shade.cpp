@@ -167,7 +167,7 @@ double Shader::shadowOf(const Point3d& p, const KeyLight& key, const LightSource
     const bool soft = light.shadows == Shadows::Soft;
     const double minimumStep = shadowMinimumStep();
     double visibility = 1;
-    double t = 0;
+    double t = interval->tNear;
     // Over-relaxed sphere tracing (Keinert et al. 2014): steps of shadowRelaxation() times the
     // estimate while the balls of consecutive points overlap; where they do not, the step may
     // have jumped over the set, so go back to the plain step.

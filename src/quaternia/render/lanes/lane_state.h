@@ -93,7 +93,7 @@ struct RayLanes {
 
     // Puts ray `next` of the batch into `lane` (and advances next), or empties the lane when the
     // batch is exhausted. Camera rays start at tNear; shadow rays at 0 with visibility 1.
-    void load(size_t lane, const RayBatch& rays, size_t& next, bool startAtZero = false) {
+    void load(size_t lane, const RayBatch& rays, size_t& next) {
         if (next >= rays.size()) {
             ray[lane] = -1;
             live[lane] = T(0);
@@ -104,7 +104,7 @@ struct RayLanes {
         live[lane] = T(1);
         ox[lane] = T(rays.ox[i]), oy[lane] = T(rays.oy[i]), oz[lane] = T(rays.oz[i]);
         dx[lane] = T(rays.dx[i]), dy[lane] = T(rays.dy[i]), dz[lane] = T(rays.dz[i]);
-        t[lane] = startAtZero ? T(0) : T(rays.tNear[i]);
+        t[lane] = T(rays.tNear[i]);
         tOutside[lane] = t[lane];
         tFar[lane] = T(rays.tFar[i]);
         confirming[lane] = T(0);

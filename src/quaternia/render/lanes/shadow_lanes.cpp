@@ -139,11 +139,12 @@ HWY_INLINE void finishShadowRays(ShadowEndLanes<T>& ends, RayLanes<T>& rayLanes,
     for (; ends.ended != 0; ends.ended &= ends.ended - 1) {
         const size_t lane = size_t(__builtin_ctzll(ends.ended));
         visibility[size_t(rayLanes.ray[lane])] = ends.visibility[lane];
-        rayLanes.load(lane, rays, next, /*startAtZero=*/true);
+        rayLanes.load(lane, rays, next);
     }
 }
 
-// Shader::shadow (shade.cpp) for a batch of shadow rays, marched from t = 0.
+// Shader::shadow (shade.cpp) for a batch of shadow rays, marched from their tNear (0 from a
+// surface; the ground's start where they enter the sphere that holds their penumbra).
 template <bool kQuadratic, class D>
 void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
                       const RayBatch& rays, std::vector<double>& visibility,
@@ -157,7 +158,7 @@ void traceShadowLanes(D d, const LaneFractal& fractal, const ShadowMarch& march,
     ShadowEndLanes<T> ends;
     size_t next = 0;
     for (size_t lane = 0; lane < kLaneGroups * lanes; ++lane)
-        rayLanes.load(lane, rays, next, /*startAtZero=*/true);
+        rayLanes.load(lane, rays, next);
     // One step of the rays in the first G vectors of lanes, from their estimates (marchBatch).
     auto marchStep = [&](auto groups, const auto& live, const auto& t, const auto& e) {
         constexpr size_t G = decltype(groups)::value;
