@@ -17,25 +17,15 @@ namespace {
 constexpr int kSize = 81;  // odd: the centre pixel's ray is the camera's axis
 
 Scene litBall(RenderEngine engine, const Vector3d& light, double intensity) {
-    Scene scene = testing::unitBallScene(kSize, kSize);
+    Scene scene = testing::darkUnitBallScene(kSize, kSize);
     scene.camera.position = {0, 0, -4};
     scene.render.engine = engine;
-    scene.render.alpha = AlphaMode::Opaque;
     ShadingSettings& s = scene.shading;
     s.lightKind = LightKind::Point;
     s.lightPosition = light;
     s.lightColor = {1, 1, 1};
     s.lightIntensity = intensity;
     s.shadows = Shadows::Hard;
-    s.fillColor = {0, 0, 0};
-    s.ambient = 0;
-    s.ambientOcclusion = 0;
-    s.specular = 0;
-    s.coloring = Coloring::Solid;
-    s.baseColor = {1, 1, 1};
-    s.backgroundTop = s.backgroundBottom = {0, 0, 0};
-    s.gamma = 1;
-    s.exposure = 1;
     return scene;
 }
 

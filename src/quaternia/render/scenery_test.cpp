@@ -20,19 +20,8 @@ constexpr int kSize = 81;
 
 // The unit ball seen from `eye`, lit by nothing (its own colour black), gamma 1, opaque.
 Scene darkBall(const Vector3d& eye) {
-    Scene scene = testing::unitBallScene(kSize, kSize);
+    Scene scene = testing::darkUnitBallScene(kSize, kSize);
     scene.camera.position = eye;
-    scene.render.alpha = AlphaMode::Opaque;
-    ShadingSettings& s = scene.shading;
-    s.lightIntensity = 0;
-    s.fillColor = {0, 0, 0};
-    s.ambient = 0;
-    s.ambientOcclusion = 0;
-    s.specular = 0;
-    s.coloring = Coloring::Solid;
-    s.baseColor = {1, 1, 1};
-    s.gamma = 1;
-    s.exposure = 1;
     return scene;
 }
 
@@ -301,7 +290,6 @@ TEST(Lights, ExtraPointLightFallsWithTheInverseSquare) {
         for (double distance : {2.0, 4.0}) {
             Scene scene = darkBall({0, 0, -4});
             scene.render.engine = engine;
-            scene.shading.backgroundTop = scene.shading.backgroundBottom = {0, 0, 0};
             LightSettings& light = scene.lights[0];
             light.enabled = true;
             light.kind = LightKind::Point;
@@ -318,7 +306,6 @@ TEST(Lights, ExtraPointLightFallsWithTheInverseSquare) {
 // The glow colours the background about the set and fades with the distance from it.
 TEST(Glow, HaloAboutTheSilhouetteFadesOutwards) {
     Scene scene = darkBall({0, 0, -4});
-    scene.shading.backgroundTop = scene.shading.backgroundBottom = {0, 0, 0};
     scene.shading.glowIntensity = 1;
     scene.shading.glowColor = {0, 1, 0};
     const Image image = render(scene).image;

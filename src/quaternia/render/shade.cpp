@@ -29,23 +29,28 @@ Shader::Shader(const ShadingSettings& settings, const Fractal& fractal,
       occlusionStep_(0.025 * fractal.boundingRadius()),
       highlightCutoff_(std::pow(1e-7, 1 / std::max(settings.shininess, 1e-3))) {
     // The key light: settings_'s own keys, its penumbra from shadow_softness.
-    LightSource key;
-    key.kind = settings.lightKind;
-    key.direction = lightDirection_;
-    key.position = Point3d(settings.lightPosition);
-    key.color = settings.lightColor;
-    key.intensity = settings.lightIntensity;
-    key.shadows = settings.shadows;
-    key.softness = settings.shadowSoftness;
-    // A key light of a given size: the penumbra of that size (lightSourceOf).
-    const double size = settings.lightKind == LightKind::Directional
-                            ? std::tan(settings.lightAngularRadius * M_PI / 180)
-                            : settings.lightRadius / std::max(length(settings.lightPosition), 1e-9);
-    if (size > 0) key.softness = 1 / size;
-    if (settings.lightKind == LightKind::Spot) {
-        key.spotAxis = normalize(settings.spotTarget - settings.lightPosition);
-        key.spotCosOuter = std::cos(settings.spotAngle * M_PI / 180);
-        key.spotCosInner = std::cos(settings.spotAngle * (1 - settings.spotSoftness) * M_PI / 180);
+    // The key light: [shading]'s keys as a light of [lightN]; without a size (radius or angular
+    // radius 0) its soft shadows keep shadow_softness.
+    LightSettings keySettings;
+    keySettings.enabled = true;
+    keySettings.kind = settings.lightKind;
+    keySettings.direction = settings.lightDirection;
+    keySettings.position = settings.lightPosition;
+    keySettings.color = settings.lightColor;
+    keySettings.intensity = settings.lightIntensity;
+    keySettings.spotTarget = settings.spotTarget;
+    keySettings.spotAngle = settings.spotAngle;
+    keySettings.spotSoftness = settings.spotSoftness;
+    keySettings.shadows = settings.shadows;
+    keySettings.radius = settings.lightRadius;
+    keySettings.angularRadius = settings.lightAngularRadius;
+    LightSource key = lightSourceOf(keySettings);
+    const bool sized = settings.lightKind == LightKind::Directional
+                           ? settings.lightAngularRadius > 0
+                           : settings.lightRadius > 0;
+    if (!sized) {
+        key.shadows = settings.shadows;
+        key.softness = settings.shadowSoftness;
     }
     lights_.push_back(key);
     for (const LightSettings& light : extraLights)

@@ -27,4 +27,21 @@ Scene unitBallScene(int width, int height) {
     return scene;
 }
 
+Scene darkUnitBallScene(int width, int height) {
+    Scene scene = unitBallScene(width, height);
+    scene.render.alpha = AlphaMode::Opaque;
+    ShadingSettings& s = scene.shading;
+    s.lightIntensity = 0;
+    s.fillColor = {0, 0, 0};
+    s.ambient = 0;
+    s.ambientOcclusion = 0;
+    s.specular = 0;
+    s.coloring = Coloring::Solid;
+    s.baseColor = {1, 1, 1};
+    s.backgroundTop = s.backgroundBottom = {0, 0, 0};
+    s.gamma = 1;
+    s.exposure = 1;
+    return scene;
+}
+
 }  // namespace quaternia::testing
