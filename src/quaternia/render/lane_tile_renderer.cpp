@@ -192,13 +192,22 @@ void LaneTileRenderer::rowRays(const Tile& tile, int py, const double* blockStar
     RowRay* out = rowRays_.data();
     constexpr double kMissed = std::numeric_limits<double>::infinity();
     for (int block = 0; block < blocks;) {
-        // Where rays that skip the set still count (bypassing_), every block's.
-        if (blockStart[block] == kMissed && !bypassing_) {
+        if (blockStart[block] == kMissed) {
+            // Where rays that skip the set still count (bypassing_), their directions alone.
+            if (bypassing_) {
+                const int end = std::min(width, (block + 1) * kConeBlock);
+                for (int i = block * kConeBlock; i < end; ++i) {
+                    out[i].origin = o;
+                    out[i].direction = normalize(row.first + row.step * double(tile.x0 + i));
+                    out[i].tNear = kMissed;
+                    out[i].tFar = -1;
+                }
+            }
             ++block;
             continue;
         }
         const int first = block * kConeBlock;
-        while (block < blocks && (blockStart[block] != kMissed || bypassing_))
+        while (block < blocks && blockStart[block] != kMissed)
             ++block;
         const int end = std::min(width, block * kConeBlock);
         for (int i = first; i < end; ++i) {

@@ -110,7 +110,13 @@ class LaneTileRenderer {
     void tracePaths(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
     // One wave of rays outside the set: marched, then shaded where they hit the set or the
     // ground, their children queued.
-    void traceOutsideWave(LaneTileStats& stats);
+    // cameraBatch: the first wave, its camera rays still in rays_ as pushRowRays left them
+    // (without the glow, which marches them from farther out).
+    void traceOutsideWave(LaneTileStats& stats, bool cameraBatch);
+    // The first wave's batch: rays_ kept, cut at the ground (those it hides the set from into
+    // groundHits_), marchedPaths_ set; returns how many paths of outside_ it took.
+    size_t keepCameraBatch();
+    std::vector<uint8_t> groundHidden_;
     // The hits_ of an outside wave, shaded (shadeHits), into their samples, and their
     // reflected and refracted rays queued.
     void shadeSetHits();
@@ -125,12 +131,33 @@ class LaneTileRenderer {
                bool inside);
     // The ground: where ray meets the plane (infinity where not ahead).
     double groundDistance(const Ray& ray) const;
+    // A sample's result added to its pixel's sums (and, while tracking_, its deviation).
+    void addSample(std::vector<PixelSamples>& pixels, const SampleResult& sample);
+    // Where a ray meets the ground: outside_[path] (groundHits_) or bypass_[path]
+    // (cameraGround_), at t along it.
     struct GroundHit {
         size_t path;
         double t;
     };
-    std::vector<GroundHit> groundHits_;
+    std::vector<GroundHit> groundHits_, cameraGround_;
+    // The points of the ground to light: where, the direction of the ray that met it, and the
+    // cone block of a camera ray's pixel (-1 for other rays).
+    struct GroundPoint {
+        Point3d x;
+        Vector3d direction;
+        int block;
+        // The side of the plane the ray came from.
+        Vector3d normal() const { return Vector3d(0, direction.y < 0 ? 1 : -1, 0); }
+    };
+    std::vector<GroundPoint> groundPoints_;
+    int blockOfPixel(int pixel) const;  // the cone block of pixel (of currentTile_)
+    // The ground's own light at groundPoints_, in groundColor_, with each light's shadow rays;
+    // the key light's visibility in groundKeyVisibility_ (1 where it is behind the plane).
+    void lightGround(LaneTileStats& stats);
+    // The ground hits of a wave (groundHits_), into their samples, their reflections queued.
     void shadeGround(LaneTileStats& stats);
+    // The camera rays of cameraGround_, which see the ground and nothing else, into pixels.
+    void shadeCameraGround(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
     // Leaves out of shadowRays_ (and shadowHit_) the ground's shadow rays of a directional
     // light that a cone about each block's rays proves fully lit.
     void clearLitGroundShadows(const LightSource& light, LaneTileStats& stats);

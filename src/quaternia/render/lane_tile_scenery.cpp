@@ -88,12 +88,21 @@ void LaneTileRenderer::tracePaths(std::vector<PixelSamples>& pixels, LaneTileSta
     // reaches past the bounding sphere.
     const bool glowing = shader_->glowIntensity() > 0;
     const double bypassNear = glowing ? 0.0 : kInfinity;
-    for (const BypassRay& b : bypass_) {
-        // Without the glow, a camera ray that skips the set and the ground sees the pixel's
-        // background: nothing to follow.
-        if (glowing || groundDistance(b.ray) < kInfinity)
+    // Without the glow, a camera ray that skips the set and the ground sees the pixel's
+    // background: nothing to follow; one that sees the ground, which reflects nothing, ends
+    // there (shadeCameraGround).
+    const bool groundEnds = !glowing && !(ground_.reflectivity > 0);
+    cameraGround_.clear();
+    for (size_t i = 0; i < bypass_.size(); ++i) {
+        const BypassRay& b = bypass_[i];
+        const double ground = glowing ? kInfinity : groundDistance(b.ray);
+        if (groundEnds && ground < kInfinity) {
+            cameraGround_.push_back({i, ground});
+        } else if (glowing || ground < kInfinity) {
             startSample(b.ray, b.pixel, bypassNear, -1);
+        }
     }
+    if (!cameraGround_.empty()) shadeCameraGround(pixels, stats);
     const bool cylinders = shadowCylinders_;
     for (bool first = true; !outside_.empty() || !inside_.empty(); first = false) {
         nextOutside_.clear();
@@ -101,38 +110,41 @@ void LaneTileRenderer::tracePaths(std::vector<PixelSamples>& pixels, LaneTileSta
         // Shadow cylinders group a block's camera rays: the first wave only.
         shadowCylinders_ = cylinders && first;
         secondaryWave_ = !first;
-        if (!outside_.empty()) traceOutsideWave(stats);
+        if (!outside_.empty()) traceOutsideWave(stats, first && !glowing);
         shadowCylinders_ = cylinders;
         secondaryWave_ = false;
         if (!inside_.empty()) traceInsideWave(stats);
         outside_.swap(nextOutside_);
         inside_.swap(nextInside_);
     }
-    const Color glow = shader_->glowColor() * shader_->glowIntensity();
-    for (const SampleResult& s : sampleResults_) {
-        // The glow is a layer in front of what the camera ray saw.
-        const Color color = glow * s.glow + s.color * (1 - s.glow);
-        const double alpha = s.glow + s.alpha * (1 - s.glow);
-        if (s.object == 0 && !(alpha > 0)) continue;
-        PixelSamples& pixel = pixels[size_t(s.pixel)];
-        pixel.sum += color;
-        ++pixel.hits;
-        pixel.uncovered += 1 - alpha;
-        if (s.object == 0) {
-            ++pixel.layerHits;
-            continue;
-        }
-        pixel.depthSum += s.depth;
-        if (s.object == 2) ++pixel.groundHits;
-        if (passes_) {
-            pixel.normalSum += s.normal;
-            pixel.trapSum += s.trap;
-        }
-        if (tracking_) {
-            float& deviation = deviation_[size_t(s.pixel)];
-            deviation = std::max(
-                deviation, sampleDeviation(color, secondReference_[size_t(s.pixel)], *shader_));
-        }
+    for (const SampleResult& sample : sampleResults_)
+        addSample(pixels, sample);
+}
+
+void LaneTileRenderer::addSample(std::vector<PixelSamples>& pixels, const SampleResult& s) {
+    // The glow is a layer in front of what the camera ray saw.
+    const Color color =
+        shader_->glowColor() * shader_->glowIntensity() * s.glow + s.color * (1 - s.glow);
+    const double alpha = s.glow + s.alpha * (1 - s.glow);
+    if (s.object == 0 && !(alpha > 0)) return;
+    PixelSamples& pixel = pixels[size_t(s.pixel)];
+    pixel.sum += color;
+    ++pixel.hits;
+    pixel.uncovered += 1 - alpha;
+    if (s.object == 0) {
+        ++pixel.layerHits;
+        return;
+    }
+    pixel.depthSum += s.depth;
+    if (s.object == 2) ++pixel.groundHits;
+    if (passes_) {
+        pixel.normalSum += s.normal;
+        pixel.trapSum += s.trap;
+    }
+    if (tracking_) {
+        float& deviation = deviation_[size_t(s.pixel)];
+        deviation = std::max(deviation,
+                             sampleDeviation(color, secondReference_[size_t(s.pixel)], *shader_));
     }
 }
 
@@ -159,17 +171,53 @@ void LaneTileRenderer::spawn(const PathRay& parent, const Ray& ray, const Color&
     (inside ? nextInside_ : nextOutside_).push_back(child);
 }
 
-void LaneTileRenderer::traceOutsideWave(LaneTileStats& stats) {
+size_t LaneTileRenderer::keepCameraBatch() {
+    const size_t count = rays_.size();
+    std::vector<uint8_t>& hidden = groundHidden_;
+    hidden.assign(count, 0);
+    size_t hiddenCount = 0;
+    for (size_t p = 0; p < count; ++p) {
+        const double ground = groundDistance(outside_[p].ray);
+        if (ground < rays_.tNear[p]) {
+            hidden[p] = 1;
+            ++hiddenCount;
+            groundHits_.push_back({p, ground});
+        } else {
+            rays_.tFar[p] = std::min(rays_.tFar[p], ground);
+        }
+    }
+    rayPixel_.resize(count);  // hits_[h].pixel: the path
+    for (size_t p = 0; p < count; ++p)
+        rayPixel_[p] = int(p);
+    if (hiddenCount > 0) {
+        rays_.removeFlagged(hidden);
+        size_t kept = 0;
+        for (size_t p = 0; p < count; ++p)
+            if (!hidden[p]) rayPixel_[kept] = rayPixel_[p], rayBlock_[kept++] = rayBlock_[p];
+        rayPixel_.resize(kept);
+        rayBlock_.resize(kept);
+    }
+    marchedPaths_.assign(rayPixel_.begin(), rayPixel_.end());
+    return count;
+}
+
+void LaneTileRenderer::traceOutsideWave(LaneTileStats& stats, bool cameraBatch) {
     // Only the camera's rays glow (the first wave: all of them camera rays).
     const bool glowing = shader_->glowIntensity() > 0 && !outside_.empty() && outside_[0].camera;
     // The batch: the rays that enter the bounding sphere before the ground.
-    rays_.clear();
-    rayPixel_.clear();
-    rayBlock_.clear();
+    if (!cameraBatch) {
+        rays_.clear();
+        rayPixel_.clear();
+        rayBlock_.clear();
+    }
     groundHits_.clear();
     std::vector<size_t>& marched = marchedPaths_;
     marched.clear();
-    for (size_t p = 0; p < outside_.size(); ++p) {
+    // The first wave without the glow: the camera rays of rays_ (the first paths of outside_)
+    // are the batch as the loop below would make it, but for the ground, which cuts them short
+    // (and takes those it hides the sphere from).
+    const size_t kept = cameraBatch ? keepCameraBatch() : 0;
+    for (size_t p = kept; p < outside_.size(); ++p) {
         const PathRay& path = outside_[p];
         // A shadow catcher is only for the camera: other rays see through it.
         const double ground =
@@ -389,97 +437,6 @@ void LaneTileRenderer::traceInsideWave(LaneTileStats& stats) {
     }
 }
 
-void LaneTileRenderer::shadeGround(LaneTileStats& stats) {
-    const size_t count = groundHits_.size();
-    const Vector3d up(0, 1, 0);
-    auto pointOf = [&](size_t g) { return outside_[groundHits_[g].path].ray.at(groundHits_[g].t); };
-    auto normalOf = [&](size_t g) {
-        return outside_[groundHits_[g].path].ray.direction.y < 0 ? up : -up;
-    };
-    const double offset = 1e-6 * boundingRadius_;
-    // Each light's visibility at every ground point (1 where it needs no shadow ray).
-    auto visibilities = [&](const LightSource& light, std::vector<double>& out) {
-        shadowRays_.clear();
-        shadowHit_.clear();
-        out.assign(count, 1.0);
-        if (light.shadows == Shadows::None) return;
-        for (size_t g = 0; g < count; ++g) {
-            const Point3d x = pointOf(g);
-            const KeyLight at = Shader::illumination(light, x);
-            if (!(Shader::keyDiffuse(normalOf(g), at) > 0)) continue;
-            const Ray ray{x + normalOf(g) * offset, at.toLight};
-            auto interval = shader_->shadowIntervalOf(ray, at, light);
-            if (!interval) continue;
-            shadowRays_.push(ray, interval->tNear, interval->tFar);
-            shadowHit_.push_back(int(g));
-        }
-        clearLitGroundShadows(light, stats);
-        marchShadowsOf(light, stats);
-        for (size_t r = 0; r < shadowHit_.size(); ++r)
-            out[size_t(shadowHit_[r])] = shader_->visibilityOf(light, shadowVisibility_[r]);
-    };
-    visibilities(shader_->keySource(), groundKeyVisibility_);
-    groundColor_.assign(count, Color());
-    for (const LightSource& light : shader_->extraLights()) {
-        visibilities(light, groundOtherVisibility_);
-        for (size_t g = 0; g < count; ++g) {
-            const Point3d x = pointOf(g);
-            groundColor_[g] += shader_->lightOther(
-                light, Shader::illumination(light, x), normalOf(g), ground_.color,
-                outside_[groundHits_[g].path].ray.direction, groundOtherVisibility_[g]);
-        }
-    }
-    // The ground's own light, lit in lanes as the set's hits are (lightSurfaces).
-    SurfaceBatch& lit = groundSurfaces_;
-    lit.resize(count);
-    for (size_t g = 0; g < count; ++g) {
-        const Vector3d n = normalOf(g);
-        const Vector3d& d = outside_[groundHits_[g].path].ray.direction;
-        const KeyLight key = shader_->keyLight(pointOf(g));
-        const bool facing = Shader::keyDiffuse(n, key) > 0;
-        lit.nx[g] = float(n.x), lit.ny[g] = float(n.y), lit.nz[g] = float(n.z);
-        lit.dx[g] = float(d.x), lit.dy[g] = float(d.y), lit.dz[g] = float(d.z);
-        lit.lx[g] = float(key.toLight.x), lit.ly[g] = float(key.toLight.y),
-        lit.lz[g] = float(key.toLight.z);
-        lit.keyScale[g] = float(key.scale);
-        lit.albedoR[g] = float(ground_.color.x), lit.albedoG[g] = float(ground_.color.y),
-        lit.albedoB[g] = float(ground_.color.z);
-        // Where the key light is behind the plane: no light, and no shadow to catch.
-        lit.visibility[g] = facing ? float(groundKeyVisibility_[g]) : 0.0f;
-        if (!facing) groundKeyVisibility_[g] = 1;
-        lit.occlusion[g] = 1;
-    }
-    lightSurfaces(lightConstants_, lit);
-    for (size_t g = 0; g < count; ++g) {
-        const PathRay& path = outside_[groundHits_[g].path];
-        SampleResult& sample = sampleResults_[size_t(path.sample)];
-        const double t = groundHits_[g].t;
-        const Vector3d n = normalOf(g);
-        if (path.camera) {
-            sample.object = 2;
-            sample.depth = t;
-            sample.normal = n;
-            if (ground_.shadowCatcher) {
-                // Only the shadow: black, as opaque as the key light is hidden.
-                sample.alpha = 1 - groundKeyVisibility_[g];
-                continue;
-            }
-            sample.alpha = 1;
-        }
-        const Color local = Color(lit.red[g], lit.green[g], lit.blue[g]) + groundColor_[g];
-        const double cosine = std::abs(path.ray.direction.y);
-        const double reflected =
-            ground_.reflectivity > 0 ? fresnelSchlick(cosine, ground_.reflectivity) : 0.0;
-        const double kept = shader_->fogKept(t);
-        sample.color +=
-            path.weight * (local * (kept * (1 - reflected)) + shader_->fogColor() * (1 - kept));
-        if (reflected > 0) {
-            const Ray ray{pointOf(g) + n * offset, reflect(path.ray.direction, n)};
-            spawn(path, ray, path.weight * (kept * reflected), path.travelled + t, false);
-        }
-    }
-}
-
 void LaneTileRenderer::marchShadowsOf(const LightSource& light, LaneTileStats& stats) {
     ShadowMarch shadowMarch;
     shadowMarch.minimumStep = shader_->shadowMinimumStep();
@@ -524,82 +481,6 @@ void LaneTileRenderer::lightOthers(LaneTileStats& stats) {
             surfaces_.blue[h] += float(added.z);
         }
     }
-}
-
-void LaneTileRenderer::clearLitGroundShadows(const LightSource& light, LaneTileStats& stats) {
-    // The shadow rays of a directional light from the ground points of one block of 4x4 camera
-    // pixels are parallel and start close together. A cone about them, from the nearest origin
-    // along the light, of radius r + s / k at s along it (r holding every origin off its axis,
-    // k the penumbra's sharpness; 0 for hard shadows), marched as the camera's cones are (steps
-    // of the estimate less the radius, ending where the estimate falls below 1.2 radii), proves
-    // where it gets through that every ray of the block passes at h >= t / k from the set at
-    // every t along it: min k h / t >= 1, fully lit, and no ray of it need be marched.
-    // (Most of the ground sees the light past the set's bounding sphere but far from the set.)
-    if (light.kind != LightKind::Directional || shadowHit_.size() < kMinCylinderRays) return;
-    const int width = currentTile_.x1 - currentTile_.x0;
-    const int across = (width + kConeBlock - 1) / kConeBlock;
-    const size_t count = shadowHit_.size();
-    std::vector<int>& block = groundBlock_;
-    block.resize(count);
-    for (size_t r = 0; r < count; ++r) {
-        const PathRay& path = outside_[groundHits_[size_t(shadowHit_[r])].path];
-        const int pixel = sampleResults_[size_t(path.sample)].pixel;
-        block[r] =
-            path.camera ? pixel / width / kConeBlock * across + pixel % width / kConeBlock : -1;
-    }
-    std::vector<int>& order = shadowOrder_;
-    order.resize(count);
-    for (size_t r = 0; r < count; ++r)
-        order[r] = int(r);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return block[size_t(a)] < block[size_t(b)]; });
-    const Vector3d& l = light.direction;
-    cylinders_.clear();
-    cylinderRays_.clear();
-    for (size_t first = 0; first < count;) {
-        size_t end = first + 1;
-        while (end < count && block[size_t(order[end])] == block[size_t(order[first])])
-            ++end;
-        if (block[size_t(order[first])] >= 0 && end - first >= kMinCylinderRays) {
-            const RayBundle bundle = bundleOf(first, end, l);
-            cylinders_.push(Ray{bundle.centre + l * bundle.nearest, l}, 0,
-                            bundle.farthest - bundle.nearest);
-            cylinders_.spread.push_back(bundle.radius);
-            cylinderRays_.push_back({first, end});
-        }
-        first = end;
-    }
-    if (cylinders_.size() == 0) return;
-    CameraMarch coneMarch = march_;
-    coneMarch.cone = true;
-    coneMarch.epsilon = 1.2;
-    coneMarch.pixelAngle = light.shadows == Shadows::Soft ? 1 / light.softness : 0.0;
-    traceCameraRays(lanes_, coneMarch, cylinders_, cylinderResults_, stats.shading);
-    shadowClear_.assign(count, 0);
-    size_t cleared = 0;
-    for (size_t c = 0; c < cylinders_.size(); ++c) {
-        const TraceResult& result = cylinderResults_[c];
-        const bool whole = result.end == TraceEnd::Miss && result.steps < march_.maxSteps;
-        // The cone's start and where it was last clear: before that, every ray of it is lit
-        // (k h / t >= 1 there), so its own march starts there.
-        const Point3d start(cylinders_.ox[c], cylinders_.oy[c], cylinders_.oz[c]);
-        for (size_t i = cylinderRays_[c].first; i < cylinderRays_[c].second; ++i) {
-            const size_t r = size_t(order[i]);
-            const double clearTo = result.tOutside - dot(shadowRayOrigin(r) - start, l);
-            if (whole || clearTo >= shadowRays_.tFar[r]) {
-                shadowClear_[r] = 1;
-                ++cleared;
-            } else {
-                shadowRays_.tNear[r] = std::max(shadowRays_.tNear[r], clearTo);
-            }
-        }
-    }
-    if (cleared == 0) return;
-    shadowRays_.removeFlagged(shadowClear_);
-    size_t kept = 0;
-    for (size_t r = 0; r < count; ++r)
-        if (!shadowClear_[r]) shadowHit_[kept++] = shadowHit_[r];
-    shadowHit_.resize(kept);
 }
 
 }  // namespace quaternia
