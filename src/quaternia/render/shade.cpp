@@ -23,10 +23,11 @@ Shader::Shader(const ShadingSettings& settings, const Fractal& fractal,
                std::span<const LightSettings> extraLights)
     : settings_(settings),
       fractal_(fractal),
+      boundingRadius_(fractal.boundingRadius()),
       lightDirection_(normalize(settings.lightDirection)),
       fillDirection_(normalize(settings.fillDirection)),
       // Occlusion is probed over a few percent of the object's size: the scale of its folds.
-      occlusionStep_(0.025 * fractal.boundingRadius()),
+      occlusionStep_(0.025 * boundingRadius_),
       highlightCutoff_(std::pow(1e-7, 1 / std::max(settings.shininess, 1e-3))) {
     // The key light: settings_'s own keys, its penumbra from shadow_softness.
     // The key light: [shading]'s keys as a light of [lightN]; without a size (radius or angular
@@ -71,7 +72,7 @@ Shader::Shader(const ShadingSettings& settings, const Fractal& fractal,
 }
 
 double Shader::shadowMinimumStep() const {
-    return 1e-4 * fractal_.boundingRadius();
+    return 1e-4 * boundingRadius_;
 }
 
 double Shader::visibilityFromMarch(double marched) const {
@@ -141,7 +142,7 @@ std::optional<RayInterval> Shader::shadowIntervalOf(const Ray& ray, const KeyLig
     // From outside the bounding sphere (the ground), a soft shadow's penumbra reaches past the
     // sphere's own shadow: a ray that passes within t / k of the set at t is partly shadowed.
     // Such rays come within (|origin| + R) / k of the sphere, which is grown by that much.
-    const double radius = fractal_.boundingRadius();
+    const double radius = boundingRadius_;
     const double distance = length(ray.origin);
     const double grown = light.shadows == Shadows::Soft && distance > radius
                              ? radius + (distance + radius) / light.softness
@@ -205,7 +206,7 @@ double Shader::lipschitzShadow(const Ray& ray, const RayInterval& interval,
     // a penumbra nor a stop on a small distance means anything: Algorithm 2's fixed steps of a
     // thousandth of the bounding radius, skipping ahead where the bound is longer, and a hard
     // shadow wherever a sample lies in K_N.
-    const double fixedStep = 1e-3 * fractal_.boundingRadius();
+    const double fixedStep = 1e-3 * boundingRadius_;
     for (double t = 2 * fixedStep; t < interval.tFar;) {
         DistanceEstimate e = fractal_.estimate(ray.at(t));
         ++stats.estimates;

@@ -144,7 +144,7 @@ class Shader {
     // Where the shadow ray starts: a few footprints off the surface so that it does not hit the
     // surface it leaves.
     Point3d shadowOrigin(const Point3d& surface, const Vector3d& normal, double footprint) const {
-        return surface + normal * (2 * footprint + 1e-6 * fractal_.boundingRadius());
+        return surface + normal * (2 * footprint + 1e-6 * boundingRadius_);
     }
     // The marching settings of shadow rays (Shadows::None: no shadow rays at all).
     Shadows shadows() const { return settings_.shadows; }
@@ -189,6 +189,8 @@ class Shader {
   private:
     ShadingSettings settings_;
     const Fractal& fractal_;
+    // fractal_.boundingRadius(), which per shaded point was a cost of its own (a virtual call).
+    double boundingRadius_;
     Vector3d lightDirection_, fillDirection_;
     // The key light, then the enabled extra lights.
     std::vector<LightSource> lights_;
