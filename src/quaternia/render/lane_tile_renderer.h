@@ -4,6 +4,7 @@
 // both paths make the same picture up to the precision of the lanes.
 #pragma once
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -171,7 +172,8 @@ class LaneTileRenderer {
     // Inside waves: per path, the fixed step index, the bracket of the exit, bisection rounds.
     PointBatch insidePoints_;
     std::vector<PointEstimate> insideEstimates_;
-    std::vector<double> insideLow_, insideHigh_, insideFar_, insideDistances_;
+    std::vector<std::array<double, 2>> insideBracket_;
+    std::vector<double> insideFar_, insideDistances_;
     std::vector<size_t> marchedPaths_, insideActive_;
     std::vector<double> groundKeyVisibility_, groundOtherVisibility_;
     std::vector<Color> groundColor_;

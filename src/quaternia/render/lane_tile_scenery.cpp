@@ -5,6 +5,7 @@
 // (shadeHits); the rays inside march by fixed steps (no distance estimate bounds a step inside
 // the set, docs/methods.md) and find where they leave it by bisection.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -353,11 +354,13 @@ void LaneTileRenderer::traceInsideWave(LaneTileStats& stats) {
     // the set narrower than h may be stepped over (docs/methods.md, Transparency).
     const double h = 2 * boundingRadius_ / material_.insideSteps;
     const size_t count = inside_.size();
-    std::vector<double>& lo = insideLow_;
-    std::vector<double>& hi = insideHigh_;
+    // Each ray's bracket of its exit: [0] the last point inside, [1] the first outside (-1
+    // until found). Indexed by a comparison, so that the loops below update it without
+    // branches: which way each ray goes is as good as random, and the branches cost more than
+    // the rest of the loops.
+    std::vector<std::array<double, 2>>& bracket = insideBracket_;
     std::vector<double>& far = insideFar_;
-    lo.assign(count, 0.0);
-    hi.assign(count, -1.0);
+    bracket.assign(count, {0.0, -1.0});
     far.resize(count);
     std::vector<size_t>& active = insideActive_;
     active.clear();
@@ -377,7 +380,7 @@ void LaneTileRenderer::traceInsideWave(LaneTileStats& stats) {
         points.x.resize(n), points.y.resize(n), points.z.resize(n);
         for (size_t i = 0; i < n; ++i) {
             const Ray& ray = inside_[active[i]].ray;
-            const double t = std::min(lo[active[i]] + h, far[active[i]]);
+            const double t = std::min(bracket[active[i]][0] + h, far[active[i]]);
             points.x[i] = ray.origin.x + ray.direction.x * t;
             points.y[i] = ray.origin.y + ray.direction.y * t;
             points.z[i] = ray.origin.z + ray.direction.z * t;
@@ -386,28 +389,26 @@ void LaneTileRenderer::traceInsideWave(LaneTileStats& stats) {
         size_t kept = 0;
         for (size_t i = 0; i < n; ++i) {
             const size_t p = active[i];
-            const double t = std::min(lo[p] + h, far[p]);
-            if (distances[i] > 0 || t >= far[p]) {
-                hi[p] = t;
-            } else {
-                lo[p] = t;
-                active[kept++] = p;
-            }
+            const double t = std::min(bracket[p][0] + h, far[p]);
+            const bool left = distances[i] > 0 || t >= far[p];
+            bracket[p][left] = t;
+            active[kept] = p;
+            kept += !left;
         }
         active.resize(kept);
     }
     for (int round = 0; round < kExitBisections; ++round) {
         insidePoints_.clear();
         for (size_t p = 0; p < count; ++p)
-            insidePoints_.push(inside_[p].ray.at(0.5 * (lo[p] + hi[p])));
+            insidePoints_.push(inside_[p].ray.at(0.5 * (bracket[p][0] + bracket[p][1])));
         estimateDistances(lanes_, insidePoints_, distances, stats.shading);
         for (size_t p = 0; p < count; ++p)
-            (distances[p] > 0 ? hi[p] : lo[p]) = 0.5 * (lo[p] + hi[p]);
+            bracket[p][distances[p] > 0] = 0.5 * (bracket[p][0] + bracket[p][1]);
     }
     // The outward normal where each ray leaves, from the estimate there.
     insidePoints_.clear();
     for (size_t p = 0; p < count; ++p)
-        insidePoints_.push(inside_[p].ray.at(hi[p]));
+        insidePoints_.push(inside_[p].ray.at(bracket[p][1]));
     estimatePoints(lanes_, insidePoints_, insideEstimates_, stats.shading);
     gradientIterations_.resize(count);
     for (size_t p = 0; p < count; ++p)
@@ -418,12 +419,12 @@ void LaneTileRenderer::traceInsideWave(LaneTileStats& stats) {
         const Vector3d& d = path.ray.direction;
         Vector3d n = normals_[p];
         if (dot(n, d) < 0) n = -n;  // outward, along the ray
-        const double length = hi[p];
+        const double length = bracket[p][1];
         const double travelled = path.travelled + length;
         // Beer-Lambert over the way inside.
         const Color weight = path.weight * exponential(material_.absorption * -length);
         const double offset = camera_->pixelFootprint(travelled) + 1e-6 * boundingRadius_;
-        const Point3d inner = path.ray.at(lo[p]);
+        const Point3d inner = path.ray.at(bracket[p][0]);
         auto out = refract(d, -n, material_.ior, 1);
         if (!out) {  // total internal reflection
             spawn(path, Ray{inner, reflect(d, n)}, weight, travelled, true);
@@ -431,7 +432,7 @@ void LaneTileRenderer::traceInsideWave(LaneTileStats& stats) {
         }
         const double reflectance = fresnelDielectric(dot(d, n), material_.ior, 1);
         // Out from the escaped point, a little along the way out (it leaves the surface).
-        const Point3d outer = path.ray.at(hi[p]) + *out * offset;
+        const Point3d outer = path.ray.at(bracket[p][1]) + *out * offset;
         spawn(path, Ray{outer, *out}, weight * (1 - reflectance), travelled, false);
         spawn(path, Ray{inner, reflect(d, n)}, weight * reflectance, travelled, true);
     }
