@@ -3,7 +3,8 @@
 # quaternia binary (these machines are shared and noisy), then the Google Benchmark suite.
 # Usage: bench/run.sh [runs]   (build first: cmake --build build)
 #        rows=REGEX bench/run.sh [runs]   only the frame rows whose names match (no films, meshes
-#        or Google Benchmark suite), e.g. rows=algebra bench/run.sh 5
+#        or Google Benchmark suite), e.g. rows=algebra bench/run.sh 5; the materials' rows
+#        (rows='reflection|look|glow|three') pair each run with one of the plain frame
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-5}
@@ -90,23 +91,46 @@ scene algebra-coquaternion-360p --width 640 --height 360 "${one_spp[@]}" \
   --set 'fractal.algebra="coquaternion"'
 scene algebra-biquaternion-360p --width 640 --height 360 "${one_spp[@]}" \
   --set 'fractal.algebra="biquaternion"' --set 'fractal.c=[-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0]'
-# Materials and lights (issue 20), 1 sample at 1080p, each beside the plain frame on the same
+# Materials and lights (issue 20), 1 sample at 1080p, each against the plain frame on the same
 # ISA (the goals: a reflective bounce with the ground at most 2x the plain frame, glass at most
 # 4x): the default scene with the ground and reflectivity 0.6, one bounce; the looks (presets
-# studio, chrome, glass: ground, extra light, mirror, glass); the glow; two extra lights.
-for target in best avx2; do
-  isa=$target scene "plain-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}"
-  isa=$target scene "reflection-ground-1080p-$target" --width 1920 --height 1080 \
-    "${one_spp[@]}" --set ground.enabled=true --set material.reflectivity=0.6 \
-    --set material.max_depth=1
-  for look in studio chrome glass; do
-    isa=$target scene "look-$look-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
-      --preset "$look"
+# studio, chrome, glass: ground, extra light, mirror, glass); the glow; two extra lights. Each
+# run of a row is paired with a run of the plain frame just before it, and the row's ratio is
+# the median of the pairs' ratios: on these shared machines the speed drifts by 30% within
+# minutes, which a ratio of two medians taken minutes apart would carry.
+paired() {  # name, then quaternia render arguments of the row; isa=... as for scene
+  local name=$1; shift
+  if [ -n "${rows:-}" ] && ! [[ $name =~ $rows ]]; then return; fi
+  : > "$out/pairs.jsonl"
+  for _ in $(seq "$runs"); do
+    "$binary" --isa "${isa:-best}" render --width 1920 --height 1080 "${one_spp[@]}" --json \
+      -o "$out/frame.png" >> "$out/pairs.jsonl"
+    "$binary" --isa "${isa:-best}" render --width 1920 --height 1080 "${one_spp[@]}" "$@" \
+      --json -o "$out/frame.png" >> "$out/pairs.jsonl"
   done
-  isa=$target scene "glow-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
-    --set shading.glow_intensity=1
-  isa=$target scene "three-lights-1080p-$target" --width 1920 --height 1080 "${one_spp[@]}" \
-    --set light1.enabled=true --set light2.enabled=true --set light2.kind=directional
+  python3 -c '
+import json, statistics, sys
+runs = [json.loads(line) for line in sys.stdin]
+plain, row = runs[0::2], runs[1::2]
+ms = statistics.median(r["seconds"] for r in row) * 1000
+plain_ms = statistics.median(r["seconds"] for r in plain) * 1000
+ratio = statistics.median(b["seconds"] / a["seconds"] for a, b in zip(plain, row))
+r = row[0]
+print("%-28s %-10s %8.1f ms %5.2fx plain (plain %6.1f ms) %8.2f Mrays/s  %-7s steps/ray %5.1f  iter/ray %5.0f  (median of %d pairs, %d threads)"
+      % (sys.argv[1], "%dx%d" % (r["width"], r["height"]), ms, ratio, plain_ms,
+         statistics.median(x["rays_per_second"] for x in row) / 1e6, r["engine"],
+         r["march_steps"] / r["rays"], r["iterations"] / r["rays"], len(row), r["threads"]))
+' "$name" < "$out/pairs.jsonl"
+}
+for target in best avx2; do
+  isa=$target paired "reflection-ground-1080p-$target" --set ground.enabled=true \
+    --set material.reflectivity=0.6 --set material.max_depth=1
+  for look in studio chrome glass; do
+    isa=$target paired "look-$look-1080p-$target" --preset "$look"
+  done
+  isa=$target paired "glow-1080p-$target" --set shading.glow_intensity=1
+  isa=$target paired "three-lights-1080p-$target" --set light1.enabled=true \
+    --set light2.enabled=true --set light2.kind=directional
 done
 [ -n "${rows:-}" ] && exit 0
 # Films (`quaternia animate`): the hidden-turn preset at 1 sample on 2 threads, frames per second
