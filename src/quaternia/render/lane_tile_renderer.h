@@ -53,9 +53,20 @@ class LaneTileRenderer {
     // Adaptive sampling (lane_tile_adaptive.cpp): the first samples of the tile and of its
     // border (refinementRegion), then the rest of the pixels that markPixelsToRefine picks.
     void renderAdaptive(const Tile& tile, std::vector<PixelSamples>& pixels, LaneTileStats& stats);
-    // Sample k of pixel (px, py) into rays_, as sampleRowRays and pushRowRays make it, with
-    // rayPixel_ = target; `blocks` is the tile of blockStart_. None where its cone missed.
-    void pushSampleRay(const Tile& blocks, int px, int py, int k, int target);
+    // Sample k of pixel (px, py), for rays_ with rayPixel_ = target: queued, then with the
+    // others queued pushed by pushSampleRays as sampleRowRays and pushRowRays make them
+    // (`blocks` is the tile of blockStart_; none where its cone missed).
+    void queueSample(int px, int py, int k, int target) {
+        queued_.push_back({px, py, k, target, 0, 0});
+    }
+    void pushSampleRays(const Tile& blocks);
+    struct QueuedSample {
+        int px, py, k, target;
+        double x, y;  // the image point (samplePosition)
+    };
+    std::vector<QueuedSample> queued_;
+    std::vector<Ray> queuedRays_;
+    std::vector<double> queuedNear_, queuedFar_;
     // Samples j = from .. to - 1 (AdaptiveSampling::index) of the tile's pixels whose refine_
     // is at least `least` and that have not taken them yet, into pixels.
     void refineSamples(const Tile& tile, const Tile& blocks, const AdaptiveSampling& order,
@@ -246,6 +257,7 @@ class LaneTileRenderer {
     std::vector<KeyLight> keyLights_;      // the key light at each hit (aimShadowRays)
     std::vector<PixelSamples> firstPass_;  // adaptive: the first samples of the tile's region
     std::vector<uint8_t> refine_;
+    std::vector<int> refinedPixels_;  // refineSamples' pixels
     std::vector<Rgba> firstDisplay_;
     // Step 2 of adaptive sampling: while tracking_, traceInto keeps each pixel's largest
     // sampleDeviation from secondReference_ in deviation_.
