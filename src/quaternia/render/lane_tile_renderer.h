@@ -43,6 +43,9 @@ class LaneTileRenderer {
     void setPasses(bool passes) { passes_ = passes; }
     // The set's material and the ground (lane_tile_scenery.cpp); call after rebind too.
     void setScenery(const MaterialSettings& material, const GroundSettings& ground);
+    // Whether camera rays that see only a ground that reflects nothing end there without the
+    // paths (shadeCameraGround), which changes no pixel; false only to check that.
+    void setGroundShortcut(bool shortcut) { groundShortcut_ = shortcut; }
 
     // Marches and shades the samples of every pixel of the tile (all of them, or adaptively);
     // pixels[(y - y0) * width + (x - x0)] receives the sums of pixel (x, y).
@@ -86,6 +89,7 @@ class LaneTileRenderer {
     bool secondaryWave_ = false;
     bool occlusion() const { return shader_->occlusionEnabled() && !secondaryWave_; }
     bool bypassing_ = false;  // the ground or the glow: rays that skip the set still count
+    bool groundShortcut_ = true;
     struct BypassRay {
         Ray ray;
         int pixel;

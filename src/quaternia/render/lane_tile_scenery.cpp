@@ -92,7 +92,7 @@ void LaneTileRenderer::tracePaths(std::vector<PixelSamples>& pixels, LaneTileSta
     // Without the glow, a camera ray that skips the set and the ground sees the pixel's
     // background: nothing to follow; one that sees the ground, which reflects nothing, ends
     // there (shadeCameraGround).
-    const bool groundEnds = !glowing && !(ground_.reflectivity > 0);
+    const bool groundEnds = groundShortcut_ && !glowing && !(ground_.reflectivity > 0);
     cameraGround_.clear();
     for (size_t i = 0; i < bypass_.size(); ++i) {
         const BypassRay& b = bypass_[i];

@@ -9,8 +9,10 @@
 #include <random>
 
 #include "quaternia/render/camera.h"
+#include "quaternia/render/lane_tile_renderer.h"
 #include "quaternia/render/optics.h"
 #include "quaternia/render/render.h"
+#include "quaternia/scene/parameters.h"
 #include "quaternia/scene/test_scenes.h"
 
 namespace quaternia {
@@ -253,6 +255,56 @@ TEST(Ground, ShadowCatcherIsTheShadowAlone) {
     EXPECT_GT(shadowed, 200);
     EXPECT_GT(open, 1000);
     EXPECT_EQ(wrong, 0);
+}
+
+// Camera rays that see the ground and nothing else end there without the paths' bookkeeping
+// (LaneTileRenderer::shadeCameraGround) where the ground reflects nothing: every pixel as the
+// paths make it, with fog, soft shadows and a point light, and as a shadow catcher.
+TEST(Ground, CameraRaysThatEndOnItChangeNoPixel) {
+    for (const bool catcher : {false, true}) {
+        Scene scene = defaultScene();
+        scene.ground.enabled = true;
+        scene.ground.shadowCatcher = catcher;
+        scene.shading.fogDensity = 0.05;
+        scene.lights[0].enabled = true;
+        scene.lights[0].kind = LightKind::Point;
+        scene.lights[0].position = {2, 3, -2};
+        scene.lights[0].color = Color(1, 0.9, 0.8);
+        scene.lights[0].intensity = 8;
+        scene.lights[0].radius = 0.3;
+        const Fractal fractal = Fractal::fromScene(scene);
+        const Camera camera(scene.camera, 160, 90);
+        const Shader shader(scene.shading, fractal, scene.lights);
+        const MarchSettings march{MarchMethod::SphereTracing, 0, scene.render.epsilon,
+                                  camera.pixelFootprint(1.0), scene.render.maxSteps};
+        const LaneFractal lanes = LaneFractal::from(fractal, Precision::Single);
+        LaneTileRenderer shortcut(lanes, camera, shader, march, 1);
+        LaneTileRenderer paths(lanes, camera, shader, march, 1);
+        shortcut.setScenery(scene.material, scene.ground);
+        paths.setScenery(scene.material, scene.ground);
+        paths.setGroundShortcut(false);
+        int ground = 0, changed = 0;
+        for (int y0 = 0; y0 < 90; y0 += 32) {
+            for (int x0 = 0; x0 < 160; x0 += 32) {
+                const Tile tile{x0, y0, std::min(x0 + 32, 160), std::min(y0 + 32, 90)};
+                std::vector<PixelSamples> a, b;
+                LaneTileStats statsA, statsB;
+                shortcut.render(tile, a, statsA);
+                paths.render(tile, b, statsB);
+                ASSERT_EQ(a.size(), b.size());
+                for (size_t i = 0; i < a.size(); ++i) {
+                    ASSERT_EQ(a[i].hits, b[i].hits);
+                    ASSERT_EQ(a[i].groundHits, b[i].groundHits);
+                    ground += a[i].groundHits;
+                    changed += length(a[i].sum - b[i].sum) > 1e-12 ||
+                               std::abs(a[i].uncovered - b[i].uncovered) > 1e-12 ||
+                               std::abs(a[i].depthSum - b[i].depthSum) > 1e-12;
+                }
+            }
+        }
+        EXPECT_GT(ground, 5000) << "the ground should fill most of the frame";
+        EXPECT_EQ(changed, 0) << (catcher ? "shadow catcher" : "ground");
+    }
 }
 
 // A light's size makes its shadow's penumbra: under a directional light straight above, the
