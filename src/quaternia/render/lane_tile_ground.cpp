@@ -159,6 +159,12 @@ void LaneTileRenderer::clearLitGroundShadows(const LightSource& light, LaneTileS
     // where it gets through that every ray of the block passes at h >= t / k from the set at
     // every t along it: min k h / t >= 1, fully lit, and no ray of it need be marched.
     // (Most of the ground sees the light past the set's bounding sphere but far from the set.)
+    // Only in a uniform pass (one sample of every pixel of the tile in the batch, sampleKey_):
+    // adaptive sampling's batches hold the tile's border (its first samples, whose pixels
+    // are not on the tile's grid of blocks) or several samples of some pixels, as many as the
+    // tile's size lets a batch hold; rays that start where a cone of such a group was clear
+    // would change with the tile size by a rounding, and the decisions with them.
+    if (!shadowCylinders_ || sampleKey_ < 0) return;
     if (light.kind != LightKind::Directional || shadowHit_.size() < kMinCylinderRays) return;
     const size_t count = shadowHit_.size();
     std::vector<int>& block = groundBlock_;

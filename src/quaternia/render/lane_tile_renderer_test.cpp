@@ -201,9 +201,21 @@ TEST(LaneRender, TileSizeChangesNoPixel) {
                               camera.pixelFootprint(1.0), scene.render.maxSteps};
     const LaneFractal lanes = LaneFractal::from(fractal, Precision::Single);
     // Adaptive sampling too: its decisions take the first samples of a border about the tile.
-    for (int samples : {1, 16}) {
+    // And with the ground, whose shadow rays of the camera's pixels are grouped by block.
+    ShadingSettings softly = scene.shading;
+    softly.shadows = Shadows::Soft;
+    const Shader softShader(softly, fractal);
+    GroundSettings ground;
+    ground.enabled = true;
+    ground.height = -1.1;
+    ground.color = Color(0.6, 0.6, 0.6);
+    for (auto [samples, withGround] :
+         {std::pair{1, false}, std::pair{16, false}, std::pair{1, true}, std::pair{16, true}}) {
+        SCOPED_TRACE(std::to_string(samples) + (withGround ? " samples, the ground" : " samples"));
         auto renderInTiles = [&](int size) {
-            LaneTileRenderer renderer(lanes, camera, shader, march, samples, true, true);
+            LaneTileRenderer renderer(lanes, camera, withGround ? softShader : shader, march,
+                                      samples, true, true);
+            if (withGround) renderer.setScenery(scene.material, ground);
             std::vector<PixelSamples> image(size_t(width * height)), tilePixels;
             for (int y0 = 0; y0 < height; y0 += size) {
                 for (int x0 = 0; x0 < width; x0 += size) {
@@ -222,10 +234,13 @@ TEST(LaneRender, TileSizeChangesNoPixel) {
             return image;
         };
         const std::vector<PixelSamples> reference = renderInTiles(32);
-        int hits = 0;
+        int hits = 0, groundHits = 0;
         for (const PixelSamples& p : reference)
-            hits += p.hits;
+            hits += p.hits, groundHits += p.groundHits;
         EXPECT_GT(hits, 5000);
+        if (withGround) {
+            EXPECT_GT(groundHits, 5000);
+        }
         for (int size : {16, 64}) {
             const std::vector<PixelSamples> image = renderInTiles(size);
             for (size_t i = 0; i < image.size(); ++i) {
