@@ -82,7 +82,7 @@ double LaneTileRenderer::coneRatio(const Camera& camera) {
 void LaneTileRenderer::render(const Tile& tile, std::vector<PixelSamples>& pixels,
                               LaneTileStats& stats) {
     currentTile_ = tile;
-    if (adaptive_ && samples_ > 1) {
+    if (adaptive_ && samples_ > 1 && onlySample_ < 0) {
         sampleKey_ = -1;  // each pixel's own count of samples
         renderAdaptive(tile, pixels, stats);
     } else {
@@ -95,10 +95,13 @@ void LaneTileRenderer::renderUniform(const Tile& tile, std::vector<PixelSamples>
     const int width = tile.x1 - tile.x0;
     tileBlocks_ =
         (width + kConeBlock - 1) / kConeBlock * ((tile.y1 - tile.y0 + kConeBlock - 1) / kConeBlock);
-    pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{.samples = samples_});
-    stats.rays += int64_t(samples_) * int64_t(pixels.size());
+    // One sample of each pixel (setOnlySample), or all of them.
+    const int first = onlySample_ >= 0 ? onlySample_ : 0;
+    const int end = onlySample_ >= 0 ? onlySample_ + 1 : samples_;
+    pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{.samples = end - first});
+    stats.rays += int64_t(end - first) * int64_t(pixels.size());
     marchCones(tile, stats);
-    for (int k = 0; k < samples_; ++k) {
+    for (int k = first; k < end; ++k) {
         sampleKey_ = k;
         sampleRays(tile, k);
         traceInto(pixels, stats);

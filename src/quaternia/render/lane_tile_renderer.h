@@ -46,6 +46,9 @@ class LaneTileRenderer {
     // Whether camera rays that see only a ground that reflects nothing end there without the
     // paths (shadeCameraGround), which changes no pixel; false only to check that.
     void setGroundShortcut(bool shortcut) { groundShortcut_ = shortcut; }
+    // Uniform sampling's sample k of the `samples` alone in every pixel (RenderOptions::
+    // onlySample); -1: every sample (or adaptive sampling where asked for).
+    void setOnlySample(int k) { onlySample_ = k; }
 
     // Marches and shades the samples of every pixel of the tile (all of them, or adaptively);
     // pixels[(y - y0) * width + (x - x0)] receives the sums of pixel (x, y).
@@ -256,6 +259,7 @@ class LaneTileRenderer {
     CameraMarch march_;
     int samples_;
     bool shadowCylinders_;
+    int onlySample_ = -1;
     bool adaptive_;
     bool passes_ = false;                  // setPasses
     std::vector<KeyLight> keyLights_;      // the key light at each hit (aimShadowRays)

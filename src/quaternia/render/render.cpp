@@ -174,10 +174,11 @@ class FrameRenderer {
     const GroundSettings ground_;
     const MarchSettings march_;
     const int samples_;
-    const bool adaptive_;  // adaptive sampling (adaptive_sampling.h): render.adaptive, samples > 1
-    const bool opaque_;    // render.alpha = "opaque"
-    const bool depth_;     // RenderOptions::depth
-    const bool passes_;    // RenderOptions::passes
+    const bool adaptive_;   // adaptive sampling (adaptive_sampling.h): render.adaptive, samples > 1
+    const int onlySample_;  // RenderOptions::onlySample
+    const bool opaque_;     // render.alpha = "opaque"
+    const bool depth_;      // RenderOptions::depth
+    const bool passes_;     // RenderOptions::passes
     const double depthNear_, depthRange_;
     // The SIMD path where the formula and marcher allow it (march_lanes.h).
     std::optional<LaneFractal> lanes_;
@@ -206,7 +207,8 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
              scene.render.maxSteps,
              scene.render.relaxation},
       samples_(scene.render.samples),
-      adaptive_(scene.render.adaptive && scene.render.samples > 1),
+      adaptive_(scene.render.adaptive && scene.render.samples > 1 && options.onlySample < 0),
+      onlySample_(options.onlySample),
       opaque_(scene.render.alpha == AlphaMode::Opaque),
       depth_(options.depth),
       passes_(options.passes),
@@ -328,7 +330,7 @@ Rgba FrameRenderer::displayPixel(int px, int py, const PixelSamples& pixel) cons
 Rgba FrameRenderer::renderPixel(int px, int py, RenderStats& stats) const {
     PixelSamples pixel;
     ShadingStats shading;
-    for (int k = 0; k < samples_; ++k)
+    for (int k = std::max(0, onlySample_); k < (onlySample_ >= 0 ? onlySample_ + 1 : samples_); ++k)
         addSample(px, py, k, pixel, stats, shading);
     stats.shadingEstimates += shading.estimates;
     stats.hits += pixel.hits;
@@ -404,10 +406,12 @@ void FrameRenderer::renderTileInLanes(const Tile& tile, ThreadTotals& thread) co
                                                               samples_, true, adaptive_);
         thread.laneTiles->setPasses(passes_);
         thread.laneTiles->setScenery(material_, ground_);
+        thread.laneTiles->setOnlySample(onlySample_);
     } else if (!thread.laneTilesBound) {
         thread.laneTiles->rebind(*lanes_, camera_, shader_, march_, samples_, adaptive_);
         thread.laneTiles->setPasses(passes_);
         thread.laneTiles->setScenery(material_, ground_);
+        thread.laneTiles->setOnlySample(onlySample_);
     }
     thread.laneTilesBound = true;
     LaneTileStats tileStats;
@@ -535,6 +539,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     validateScene(scene);
     const RenderSettings& settings = scene.render;
     const Tile window = renderWindow(settings, options);
+    if (options.onlySample < -1 || options.onlySample >= settings.samples)
+        throw std::invalid_argument("RenderOptions::onlySample outside the pixel's samples");
     const int width = window.x1 - window.x0, height = window.y1 - window.y0;
     RenderResult result = emptyResult(settings, options, window);
     const FrameRenderer frame(scene, options, window, result);

@@ -48,6 +48,10 @@ struct RenderOptions : WorkOptions {
     // tiles and cone blocks then fall on the same pixels). quaternia-mpi renders a poster
     // window by window on many machines.
     std::optional<Tile> window;
+    // Each pixel as uniform sampling's sample k (0 <= k < render.samples) alone, in place of
+    // all of them (or adaptive sampling): bench/adaptive_study renders the samples one by one
+    // to measure what an adaptive sampler could save. -1: every sample.
+    int onlySample = -1;
 };
 
 // What RenderOptions::window's corner must be a multiple of: the largest tile side.

@@ -328,6 +328,49 @@ TEST(Render, OpaqueSamplesAreTheImagesPngSamples) {
     EXPECT_EQ(coverage.image.width(), scene.render.width);
 }
 
+// RenderOptions::onlySample: each pixel's samples rendered one at a time are the uniform
+// render's, which is their mean (opaque: composited over the background), on both engines, and
+// a sample outside the pixel's is refused before work (bench/adaptive_study relies on both).
+TEST(Render, SamplesOneAtATimeAverageToTheUniformRender) {
+    for (RenderEngine engine : {RenderEngine::Simd, RenderEngine::Scalar}) {
+        Scene scene = defaultScene();
+        scene.render.width = 40;
+        scene.render.height = 30;
+        scene.render.samples = 4;
+        scene.render.adaptive = true;  // ignored where one sample is asked for
+        scene.render.engine = engine;
+        scene.render.alpha = AlphaMode::Opaque;
+        RenderOptions options;
+        options.passes = true;
+        scene.render.adaptive = false;
+        const std::vector<Rgba> uniform = render(scene, options).passes.linear;
+        scene.render.adaptive = true;
+        std::vector<Rgba> sum(uniform.size());
+        std::vector<Rgba> first;
+        int differing = 0;  // pixels whose samples differ: they are not one sample four times
+        for (int k = 0; k < 4; ++k) {
+            options.onlySample = k;
+            const std::vector<Rgba> one = render(scene, options).passes.linear;
+            ASSERT_EQ(one.size(), uniform.size());
+            for (size_t p = 0; p < one.size(); ++p) {
+                sum[p].r += one[p].r, sum[p].g += one[p].g, sum[p].b += one[p].b;
+                if (k > 0) differing += !(one[p] == first[p]);
+            }
+            if (k == 0) first = one;
+        }
+        EXPECT_GT(differing, 20);
+        double largest = 0;
+        for (size_t p = 0; p < uniform.size(); ++p) {
+            largest = std::max({largest, double(std::abs(sum[p].r / 4 - uniform[p].r)),
+                                double(std::abs(sum[p].g / 4 - uniform[p].g)),
+                                double(std::abs(sum[p].b / 4 - uniform[p].b))});
+        }
+        EXPECT_LT(largest, 1e-5) << (engine == RenderEngine::Simd ? "simd" : "scalar");
+        options.onlySample = 4;
+        EXPECT_THROW(render(scene, options), std::invalid_argument);
+    }
+}
+
 TEST(Render, RejectsBadFormulaBeforeWork) {
     Scene scene = unitBallScene(8, 8);
     scene.fractal.formula = "z^2 + x";
