@@ -42,6 +42,14 @@ struct PixelSamples {
     int layerHits = 0;
 };
 
+// The sample indices [first, end) that uniform sampling takes in each pixel: all n, or sample
+// `only` alone where it is at least 0 (RenderOptions::onlySample).
+struct UniformSamples {
+    int first, end;
+    UniformSamples(int n, int only) : first(only >= 0 ? only : 0), end(only >= 0 ? only + 1 : n) {}
+    int count() const { return end - first; }
+};
+
 // The order in which a pixel takes its n samples and how many it takes at each step.
 class AdaptiveSampling {
   public:

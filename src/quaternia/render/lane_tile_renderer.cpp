@@ -95,13 +95,12 @@ void LaneTileRenderer::renderUniform(const Tile& tile, std::vector<PixelSamples>
     const int width = tile.x1 - tile.x0;
     tileBlocks_ =
         (width + kConeBlock - 1) / kConeBlock * ((tile.y1 - tile.y0 + kConeBlock - 1) / kConeBlock);
-    // One sample of each pixel (setOnlySample), or all of them.
-    const int first = onlySample_ >= 0 ? onlySample_ : 0;
-    const int end = onlySample_ >= 0 ? onlySample_ + 1 : samples_;
-    pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0), PixelSamples{.samples = end - first});
-    stats.rays += int64_t(end - first) * int64_t(pixels.size());
+    const UniformSamples taken(samples_, onlySample_);
+    pixels.assign(size_t(width) * size_t(tile.y1 - tile.y0),
+                  PixelSamples{.samples = taken.count()});
+    stats.rays += int64_t(taken.count()) * int64_t(pixels.size());
     marchCones(tile, stats);
-    for (int k = first; k < end; ++k) {
+    for (int k = taken.first; k < taken.end; ++k) {
         sampleKey_ = k;
         sampleRays(tile, k);
         traceInto(pixels, stats);

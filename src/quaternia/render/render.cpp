@@ -330,7 +330,8 @@ Rgba FrameRenderer::displayPixel(int px, int py, const PixelSamples& pixel) cons
 Rgba FrameRenderer::renderPixel(int px, int py, RenderStats& stats) const {
     PixelSamples pixel;
     ShadingStats shading;
-    for (int k = std::max(0, onlySample_); k < (onlySample_ >= 0 ? onlySample_ + 1 : samples_); ++k)
+    const UniformSamples taken(samples_, onlySample_);
+    for (int k = taken.first; k < taken.end; ++k)
         addSample(px, py, k, pixel, stats, shading);
     stats.shadingEstimates += shading.estimates;
     stats.hits += pixel.hits;
