@@ -156,5 +156,31 @@ TEST_F(DynamicsCli, BadInputIsOneLineWithExitCode2) {
     expectUserError(run("orbit " + write("bad.toml", "[orbit]\nz0 = 1\n").string()), "orbit.z0");
 }
 
+TEST_F(DynamicsCli, OrbitsThatRecurBeforeTheyArriveAnswerInsteadOfCrashing) {
+    // Issue 41's reproductions (each ended in a segmentation fault): the fate and period are
+    // those of the orbits iterated far past the analysis (orbit_test.cpp, OrbitRegression).
+    Json coquaternion = Json::parse(ok("orbit --set fractal.algebra=coquaternion --json"));
+    EXPECT_EQ(coquaternion["fate"], "attracted") << coquaternion;
+    EXPECT_EQ(coquaternion["period"], 1) << coquaternion;
+    Json program =
+        Json::parse(ok("orbit --set 'fractal.c=[-0.611, -0.038, 0.029, -0.075]' --set "
+                       "'fractal.formula=\"z^2 + 0.1*z + c\"' --set "
+                       "'orbit.z0=[-0.712, 0.459, -0.789, -0.537]' --json"));
+    EXPECT_EQ(program["fate"], "escapes") << program;
+    EXPECT_EQ(program["connectedness"]["connected"], true) << program;
+    Json sine = Json::parse(
+        ok("orbit --set fractal.algebra=bicomplex --set 'fractal.c=[0.079, 0.147, -0.152, "
+           "0.109]' --set 'fractal.formula=\"sin(z) + c\"' --set 'orbit.z0=[0.931, 0.358, "
+           "0.125, 0.567]' --json"));
+    EXPECT_EQ(sine["fate"], "attracted") << sine;
+    EXPECT_EQ(sine["period"], 1) << sine;
+    std::string plane =
+        ok("plane --set 'fractal.c=[0.139, 0.542, -0.304, 0.195]' --set "
+           "'fractal.formula=\"z^3 + c\"' --set plane.kind=julia --width 64 "
+           "--height 36 -o " +
+           output());
+    expectHas(plane, "K is connected");
+}
+
 }  // namespace
 }  // namespace quaternia

@@ -165,14 +165,34 @@ OrbitWalk<typename Map::Point> walkOrbit(const Map& f, const typename Map::Point
     }
 }
 
+// Continues the orbit, if no iterate so far is within tol of the cycle, until one is. The
+// recurrence |z_k - z_{k-n}| <= tol that found the cycle puts z_k within about tol / |1 - lambda|
+// of it (lambda the multiplier of f^n), not within tol: an orbit that spirals into an attracting
+// cycle (lambda near a root of unity) or creeps into it (lambda near 1) recurs before it arrives,
+// and Newton's cycle then lies beyond tol of every iterate so far. False when the orbit leaves the
+// escape radius or passes maxIterations first: then the cycle is not shown to be this orbit's.
+template <typename Map>
+bool reachCycle(const Map& f, std::vector<typename Map::Point>& orbit, double tol,
+                double escapeRadius, int maxIterations, const typename Map::Cycle& cycle) {
+    for (const auto& z : orbit)
+        if (distanceToCycle<Map>(z, cycle.points) <= tol) return true;
+    while (distanceToCycle<Map>(orbit.back(), cycle.points) > tol) {
+        if (int(orbit.size()) - 1 >= maxIterations) return false;
+        orbit.push_back(f(orbit.back()));
+        if (!(Map::size(orbit.back()) <= escapeRadius)) return false;
+    }
+    return true;
+}
+
 // The first iterate on the cycle (within tol): the orbit's preperiod. The cycle is rotated so
-// that its points[0] is the point the orbit meets there.
+// that its points[0] is the point the orbit meets there. Some iterate is on the cycle
+// (reachCycle).
 template <typename Map>
 int meetCycle(const Map& f, const std::vector<typename Map::Point>& orbit, double tol,
               typename Map::Cycle& cycle) {
     int hit = 0;
-    while (distanceToCycle<Map>(orbit[hit], cycle.points) > tol)
-        ++hit;  // ends at the recurrence's index at the latest
+    while (distanceToCycle<Map>(orbit[size_t(hit)], cycle.points) > tol)
+        ++hit;
     for (size_t k = 0; k < cycle.points.size(); ++k) {
         if (Map::size(orbit[hit] - cycle.points[k]) <= tol) {
             std::rotate(cycle.points.begin(), cycle.points.begin() + std::ptrdiff_t(k),
@@ -248,8 +268,8 @@ BasicOrbitResult<typename Map::Cycle> orbitOf(const Map& f, double escapeRadius,
                                               const OrbitOptions& options) {
     BasicOrbitResult<typename Map::Cycle> result;
     result.escapeRadius = escapeRadius;
-    const auto walk = walkOrbit(f, z0, result.escapeRadius, options);
-    const auto& orbit = walk.orbit;
+    auto walk = walkOrbit(f, z0, result.escapeRadius, options);
+    auto& orbit = walk.orbit;
     const Recurrence& recurrence = walk.recurrence;
     result.tolerance = options.tolerance * walk.scale;
     result.iterations = int(orbit.size()) - 1;
@@ -280,6 +300,19 @@ BasicOrbitResult<typename Map::Cycle> orbitOf(const Map& f, double escapeRadius,
     bool orbitInPlane = cycle.multiplier && Map::inPlane(z0, cycle.axis);
     result.governingClass = orbitInPlane ? cycle.complexClass : cycle.classInH;
     result.unsure = result.unsure || result.governingClass.unsure;
+    if (!reachCycle(f, orbit, tol, escapeRadius, options.maxIterations, cycle)) {
+        result = BasicOrbitResult<typename Map::Cycle>{};
+        result.escapeRadius = escapeRadius;
+        result.tolerance = tol;
+        result.iterations = int(orbit.size()) - 1;
+        result.unsure = true;
+        result.note = "the orbit recurred with period " + std::to_string(recurrence.period) +
+                      " at iteration " + std::to_string(recurrence.index) +
+                      " but came no nearer than the tolerance to the cycle found there within " +
+                      std::to_string(result.iterations) + " iterations";
+        return result;
+    }
+    result.iterations = int(orbit.size()) - 1;
     result.preperiod = meetCycle(f, orbit, tol, cycle);
     decideFate<Map>(orbit, result.preperiod, walk.scale, result);
     return result;

@@ -327,6 +327,109 @@ TEST(HypercomplexOrbit, BicomplexFixedPointInSpanOneJHasTheComplexMultiplier) {
     EXPECT_EQ(off.governingClass.stability, off.cycle->classInH.stability);
 }
 
+// ---- Orbits that recur before they reach their cycle (issue 41) ----------------------------
+// Each of these crashed: the recurrence |z_k - z_{k-n}| <= tol puts z_k within about
+// tol / |1 - lambda| of the cycle, and Newton's cycle lay beyond tol of every iterate so far.
+// The answers are checked against the orbit itself, iterated far past the analysis.
+
+template <typename Map, typename Point>
+Point iterateMany(const Map& f, Point z, int n) {
+    for (int k = 0; k < n; ++k)
+        z = f(z);
+    return z;
+}
+
+TEST(OrbitRegression, CoquaternionOrbitSpirallingIntoAFixedPointIsAttracted) {
+    // quaternia orbit --set fractal.algebra=coquaternion (the default c, z0 = 0): the fixed
+    // point's multipliers -0.513 +- 0.699i turn by 126 degrees, so z_k recurs with period 3.
+    const Hypercomplex c{-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0};
+    const auto r = hypercomplexOrbitOf<4>(Algebra::kCoquaternion, c, Hypercomplex{});
+    ASSERT_EQ(r.fate, OrbitFate::Attracted) << r.note;
+    ASSERT_TRUE(r.cycle);
+    EXPECT_EQ(r.cycle->period(), 1);
+    EXPECT_EQ(r.governingClass.stability, Stability::Attracting);
+    const HypercomplexFormula f(Formula::parse("z^2 + c"), Algebra::kCoquaternion, c);
+    const Hypercomplex w = r.cycle->points[0];
+    EXPECT_LT(euclideanNorm(f.evaluate(w) - w), 1e-13);
+    auto map = [&](const Hypercomplex& z) { return f.evaluate(z); };
+    EXPECT_LT(euclideanNorm(iterateMany(map, Hypercomplex{}, 5000) - w), 1e-12);
+    // The analysis met the cycle where the orbit does: within tol there, not before.
+    const Hypercomplex met = iterateMany(map, Hypercomplex{}, r.preperiod);
+    EXPECT_LE(euclideanNorm(met - w), r.tolerance);
+    EXPECT_GT(euclideanNorm(map(Hypercomplex{}) - w), r.tolerance);
+}
+
+TEST(OrbitRegression, BicomplexSineOrbitCreepingIntoAFixedPointIsAttracted) {
+    // quaternia orbit --set fractal.algebra=bicomplex --set fractal.formula="sin(z) + c" ...
+    const Hypercomplex c{0.079, 0.147, -0.152, 0.109, 0, 0, 0, 0};
+    const Hypercomplex z0{0.931, 0.358, 0.125, 0.567, 0, 0, 0, 0};
+    const HypercomplexJuliaSet set(
+        HypercomplexFormula(Formula::parse("sin(z) + c"), Algebra::kBicomplex, c), 100, 0);
+    const auto r = analyzeHypercomplexOrbit<4>(set.formula(), set.escapeRadius(), z0);
+    ASSERT_EQ(r.fate, OrbitFate::Attracted) << r.note;
+    ASSERT_TRUE(r.cycle);
+    EXPECT_EQ(r.cycle->period(), 1);
+    EXPECT_EQ(r.governingClass.stability, Stability::Attracting);
+    auto map = [&](const Hypercomplex& z) { return set.formula().evaluate(z); };
+    const Hypercomplex w = r.cycle->points[0];
+    EXPECT_LT(euclideanNorm(map(w) - w), 1e-13);
+    EXPECT_LT(euclideanNorm(iterateMany(map, z0, 20000) - w), 1e-12);
+    EXPECT_LE(euclideanNorm(iterateMany(map, z0, r.preperiod) - w), r.tolerance);
+}
+
+TEST(OrbitRegression, CriticalOrbitsThatRecurEarlyStillDecideConnectedness) {
+    // The critical orbits behind two crashes: z^2 + 0.1 z + c at c = -0.611 - 0.038i + 0.029j
+    // - 0.075k (quaternia orbit ...), and z^3 + c at c = 0.139 + 0.542i - 0.304j + 0.195k
+    // (quaternia plane ... plane.kind=julia), both through the plane C_u of c, where the
+    // critical orbits converge to an attracting cycle: K is connected, and certainly so.
+    struct Case {
+        const char* formula;
+        Quaternion c;
+    };
+    for (const Case& item : {Case{"z^2 + 0.1*z + c", Quaternion(-0.611, -0.038, 0.029, -0.075)},
+                             Case{"z^3 + c", Quaternion(0.139, 0.542, -0.304, 0.195)}}) {
+        const auto restriction = restrictToComplexPlane(compileFormula(item.formula, item.c));
+        ASSERT_TRUE(restriction) << item.formula;
+        const ComplexPolynomial& p = restriction->polynomial;
+        const Connectedness k = connectedness(p, 1000);
+        EXPECT_TRUE(k.connected) << item.formula;
+        EXPECT_TRUE(k.certain) << item.formula;
+        for (const CriticalOrbit& critical : k.criticalOrbits) {
+            const OrbitResult& r = critical.orbit;
+            ASSERT_TRUE(r.fate == OrbitFate::Attracted || r.fate == OrbitFate::Periodic ||
+                        r.fate == OrbitFate::Preperiodic)
+                << item.formula << ": " << r.note;
+            ASSERT_TRUE(r.cycle);
+            // The critical orbit, iterated as a complex number far past the analysis, sits on
+            // the cycle the analysis found (its points are in C_i: quaternionPolynomial).
+            Complex z = critical.point;
+            for (int n = 0; n < 20000; ++n)
+                z = p.evaluate(z);
+            double nearest = INFINITY;
+            for (const Quaternion& w : r.cycle->points)
+                nearest = std::min(nearest, std::abs(Complex(w.w, w.x) - z));
+            EXPECT_LT(nearest, 1e-10) << item.formula;
+        }
+    }
+}
+
+TEST(OrbitRegression, OrbitThatNeverReachesNewtonsCycleIsUndecided) {
+    // An orbit that recurs (within tol over 3 iterates) while still far from its fixed point,
+    // with too few iterations left to arrive: the analysis says so instead of naming a cycle.
+    const Hypercomplex c{-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0};
+    const HypercomplexJuliaSet set(
+        HypercomplexFormula(Formula::parse("z^2 + c"), Algebra::kCoquaternion, c), 100, 0);
+    const auto full = analyzeHypercomplexOrbit<4>(set.formula(), set.escapeRadius(), {});
+    ASSERT_EQ(full.fate, OrbitFate::Attracted);
+    OrbitOptions options;
+    options.maxIterations = full.preperiod - 1;
+    const auto cut = analyzeHypercomplexOrbit<4>(set.formula(), set.escapeRadius(), {}, options);
+    EXPECT_EQ(cut.fate, OrbitFate::Undecided);
+    EXPECT_FALSE(cut.cycle);
+    EXPECT_TRUE(cut.unsure);
+    EXPECT_NE(cut.note.find("recurred"), std::string::npos) << cut.note;
+}
+
 TEST(HypercomplexOrbit, DimensionMustBeTheAlgebras) {
     const HypercomplexFormula f(Formula::parse("z^2 + c"), Algebra::kOctonion, realElement(-1));
     EXPECT_THROW(analyzeHypercomplexOrbit<4>(f, 2, Hypercomplex{}), std::invalid_argument);
