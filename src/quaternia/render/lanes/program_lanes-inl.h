@@ -113,8 +113,9 @@ struct ProgramLanes {
         for (std::size_t n = 0; n < code.size(); ++n) {
             const Instruction& i = code[n];
             Q* out = r + n * G;
-            const Q* a = r + std::size_t(i.a) * G;
-            const Q* b = r + std::size_t(i.b) * G;
+            // Operands an instruction lacks are -1: point them at register 0, not before r.
+            const Q* a = r + std::size_t(std::max(i.a, 0)) * G;
+            const Q* b = r + std::size_t(std::max(i.b, 0)) * G;
             switch (i.op) {
                 case Op::kZ:
                     for (size_t j = 0; j < K; ++j)
