@@ -11,6 +11,7 @@
 
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/mesh/mesh_check.h"
+#include "quaternia/mesh/mesh_grid.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/test_scenes.h"
 
@@ -146,6 +147,30 @@ TEST(Mesher, CancelledMeshSaysSo) {
     Scene scene = defaultScene();
     scene.mesh.resolution = 64;
     EXPECT_FALSE(meshScene(scene, options).completed);
+}
+
+TEST(Mesher, BoxSearchStopsAtItsBudgetWithTheBoundingCube) {
+    // A biquaternion set whose Lipschitz bound rules out no cube (issue 41: `mesh --resolution 9`
+    // took seconds, minutes under the sanitizers): the search takes its budget of estimates and
+    // answers the bounding cube, which holds the set; the presets' sets take far fewer.
+    Scene scene = defaultScene();
+    scene.fractal.algebra = Algebra::kBiquaternion;
+    scene.fractal.formula = "(0.28-0.335i+0.296k)*z^4 + c";
+    scene.fractal.c = Quaternion(0.971, 0.664, -1.188, -0.561);
+    scene.fractal.cUpper = {1.141, 0.733, 1.095, -0.445};
+    scene.fractal.cComponents = 8;
+    scene.fractal.maxIterations = 8;
+    const Fractal fractal = Fractal::fromScene(scene);
+    int64_t estimates = 0;
+    const auto box = boundingBoxOfSet(fractal, kBoundingBoxDivisions, estimates);
+    ASSERT_TRUE(box);
+    const double r = fractal.boundingRadius();
+    EXPECT_NEAR(box->lower.x, -r, 1e-12);
+    EXPECT_NEAR(box->upper.z, r, 1e-12);
+    EXPECT_LE(estimates, (int64_t(1) << 19) + 1);
+    int64_t presetEstimates = 0;
+    boundingBoxOfSet(Fractal::fromScene(defaultScene()), kBoundingBoxDivisions, presetEstimates);
+    EXPECT_LT(presetEstimates, int64_t(1) << 17);
 }
 
 }  // namespace
