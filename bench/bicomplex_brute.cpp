@@ -29,13 +29,11 @@
 #include <string>
 #include <vector>
 
+#include "bicomplex_brute_mask.h"
 #include "quaternia/image/png_writer.h"
 #include "quaternia/render/camera.h"
-#include "quaternia/util/parallel.h"
 
 namespace {
-
-using Complex = std::complex<double>;
 
 struct Options {
     double c[4] = {0, 0, 0, 0};
@@ -118,90 +116,27 @@ Options parseOptions(int argc, char** argv) {
     return o;
 }
 
-// POV-Ray's membership test of a 3D point (Iteration_HCompl: z_0 .. z_{N-1} tested).
-class BicomplexSet {
-  public:
-    explicit BicomplexSet(const Options& o)
-        : power_(o.power), iterations_(o.iterations), bailoutSquared_(o.bailout * o.bailout) {
-        const double norm = std::sqrt(o.slice[0] * o.slice[0] + o.slice[1] * o.slice[1] +
-                                      o.slice[2] * o.slice[2] + o.slice[3] * o.slice[3]);
-        if (!(norm > 0) || o.slice[3] == 0)
-            throw std::invalid_argument("--slice: the normal's w must not be 0");
-        for (int k = 0; k < 4; ++k)
-            normal_[k] = o.slice[k] / norm;
-        distance_ = o.slice[4];
-        ca_ = Complex(o.c[0] - o.c[3], o.c[1] + o.c[2]);
-        cb_ = Complex(o.c[0] + o.c[3], o.c[1] - o.c[2]);
-    }
-
-    bool contains(const quaternia::Point3d& p) const {
-        const double w =
-            (distance_ - normal_[0] * p.x - normal_[1] * p.y - normal_[2] * p.z) / normal_[3];
-        Complex a(p.x - w, p.y + p.z), b(p.x + w, p.y - p.z);
-        for (int n = 0; n < iterations_; ++n) {
-            if (0.5 * (std::norm(a) + std::norm(b)) > bailoutSquared_) return false;
-            a = raise(a) + ca_;
-            b = raise(b) + cb_;
-        }
-        return true;
-    }
-
-  private:
-    Complex raise(const Complex& z) const {
-        Complex result = z;
-        for (int k = 1; k < power_; ++k)
-            result *= z;
-        return result;
-    }
-
-    int power_, iterations_;
-    double bailoutSquared_;
-    double normal_[4], distance_;
-    Complex ca_, cb_;
-};
-
-// Samples t0, t0 + step, ... up to t1 where the ray is inside the sphere |p| <= radius.
-bool rayHits(const quaternia::Ray& ray, const BicomplexSet& set, double radius, double step) {
-    const double b = quaternia::dot(ray.origin, ray.direction);
-    const double c = quaternia::dot(ray.origin, ray.origin) - radius * radius;
-    const double discriminant = b * b - c;
-    if (discriminant < 0) return false;
-    const double root = std::sqrt(discriminant);
-    const double t0 = std::max(0.0, -b - root), t1 = -b + root;
-    for (long k = 0;; ++k) {
-        const double t = t0 + double(k) * step;
-        if (t > t1) return false;
-        if (set.contains(ray.at(t))) return true;
-    }
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
     using namespace quaternia;
     try {
         const Options o = parseOptions(argc, argv);
-        const BicomplexSet set(o);
         CameraSettings settings;
         settings.position = Point3d(o.camera[0], o.camera[1], o.camera[2]);
         settings.lookAt = Point3d(o.camera[3], o.camera[4], o.camera[5]);
         settings.up = Vector3d(0, 1, 0);
         settings.fovDegrees = o.fov;
         const Camera camera(settings, o.width, o.height);
+        bench::BicomplexBrute set;
+        std::copy(o.c, o.c + 4, set.c);
+        std::copy(o.slice, o.slice + 5, set.slice);
+        set.power = o.power, set.iterations = o.iterations, set.bailout = o.bailout;
+        set.radius = o.radius, set.step = o.step;
 
         const auto start = std::chrono::steady_clock::now();
-        std::vector<uint8_t> samples(size_t(o.width) * size_t(o.height), 0);
-        ParallelOptions parallel;
-        parallel.threads = o.threads;
-        parallel.chunkSize = 1;
-        parallelFor(o.height, parallel, [&](int64_t begin, int64_t end, int) {
-            for (int64_t y = begin; y < end; ++y)
-                for (int x = 0; x < o.width; ++x) {
-                    const Ray ray = camera.generateRay(x + 0.5, double(y) + 0.5);
-                    if (rayHits(ray, set, o.radius, o.step))
-                        samples[size_t(y) * size_t(o.width) + size_t(x)] = 255;
-                }
-        });
+        const std::vector<uint8_t> samples =
+            bench::bicomplexBruteMask(set, camera, o.width, o.height, o.threads);
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -32,6 +32,8 @@ class Fractal {
     // must not be called: only the scalar reference paths, which use the members below, apply).
     bool isQuaternion() const { return hypercomplex_ == nullptr; }
     const HypercomplexFractal* hypercomplex() const { return hypercomplex_.get(); }
+    // The same, shared: for a consumer that may outlive this Fractal (the lanes' fallback).
+    std::shared_ptr<const HypercomplexFractal> sharedHypercomplex() const { return hypercomplex_; }
     // What estimate() returns: an estimate to march by, or a proven but short distance that the
     // renderer combines with Algorithm 2's fixed steps.
     DistanceKind distanceKind() const;

@@ -186,6 +186,10 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
                         std::abs(componentCoefficients_[i][size_t(k)]) * (1 + 1e-9) + 1e-12;
                 b[1] += 1;
                 componentEscapeRadius_[i] = escapeRadiusFrom(m, b, d, "bicomplex formula");
+                // K_N gives a component at most sqrt(2) bailout: |q|^2 = (|a|^2 + |b|^2) / 2.
+                components_[size_t(i)] =
+                    DuplexComponent(componentCoefficients_[i], componentEscapeRadius_[i],
+                                    std::sqrt(2.0) * bailout_);
             }
             escapeRadius_ = bailout_;
             break;
@@ -254,7 +258,8 @@ DistanceEstimate HypercomplexJuliaSet::bicomplexEstimate(const Hypercomplex& z0)
     // it is far outside its escape radius.
     DistanceEstimate result;
     const double bailoutSquared = bailout_ * bailout_;
-    std::array<Complex, 2> w = duplexForm(z0), slope = {Complex(1), Complex(1)};
+    const std::array<Complex, 2> start = duplexForm(z0);
+    std::array<Complex, 2> w = start, slope = {Complex(1), Complex(1)};
     auto step = [&](size_t i) {
         slope[i] *= hornerDerivative(componentCoefficients_[i], w[i]);
         w[i] = horner(componentCoefficients_[i], w[i]);
@@ -287,7 +292,12 @@ DistanceEstimate HypercomplexJuliaSet::bicomplexEstimate(const Hypercomplex& z0)
         }
         iterations = std::max(iterations, k);
         const double r2 = std::norm(w[i]);
-        if (r2 > R2) {
+        if (r2 > R2 && !components_[i].connected()) {
+            // A disconnected K_i: the estimate is no bound near the escaping critical points'
+            // preimages (duplex_component.h).
+            const double d = components_[i].distance(start[i], maxIterations_);
+            distanceSquared += d * d;
+        } else if (r2 > R2) {
             const double d =
                 std::max(0.0, 0.25 * std::sqrt(r2) / std::abs(slope[i]) * std::log(r2));
             distanceSquared += d * d;

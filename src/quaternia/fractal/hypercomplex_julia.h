@@ -26,6 +26,7 @@
 #include "quaternia/algebra/hypercomplex_formula.h"
 #include "quaternia/algebra/vecmath.h"
 #include "quaternia/fractal/distance.h"
+#include "quaternia/fractal/duplex_component.h"
 #include "quaternia/scene/scene.h"
 
 namespace quaternia {
@@ -93,6 +94,8 @@ class HypercomplexJuliaSet {
         return componentCoefficients_[i];
     }
     double componentEscapeRadius(size_t i) const { return componentEscapeRadius_[i]; }
+    // Bicomplex polynomials: duplex component i with its distance bound (duplex_component.h).
+    const DuplexComponent& component(size_t i) const { return components_[i]; }
 
   private:
     DistanceEstimate octonionEstimate(const Hypercomplex& z0) const;
@@ -111,6 +114,7 @@ class HypercomplexJuliaSet {
     // first) and their escape radii
     std::array<std::vector<std::complex<double>>, 2> componentCoefficients_;
     std::array<double, 2> componentEscapeRadius_ = {0, 0};
+    std::array<DuplexComponent, 2> components_;
 };
 
 // The set and slice of a scene whose fractal.algebra is not the quaternions.

@@ -47,6 +47,12 @@ struct LaneConstants {
     bool bicomplex = false, bicomplexSquare = false;
     LaneVector<V> bicomplexReal[2], bicomplexImaginary[2];
     V componentEscapeRadiusSquared[2];
+    // Components with a disconnected K (LaneFractal::Bicomplex): G*, ln|a_d| / (d - 1), ln d,
+    // and the scalar reference for the pull-back (null where both are connected).
+    bool componentConnected[2] = {true, true}, componentBinomial[2] = {false, false};
+    V criticalPotential[2], leadLog[2], logDegree, inverseLead[2], pullBackLimit[2];
+    V expm1Critical[2];  // e^G* - 1
+    const HypercomplexJuliaSet* bicomplexReference = nullptr;
     // A folded octonion slice (LaneFractal::folded): the fold's rows 4 and 5 (origin, axes),
     // and 2 s, the loop's scale.
     bool folded = false;
@@ -86,9 +92,23 @@ struct LaneConstants {
                 }
                 componentEscapeRadiusSquared[i] =
                     hn::Set(d, T(f.bicomplex->escapeRadiusSquared[i]));
+                componentConnected[i] = f.bicomplex->criticalPotential[i] == 0;
+                criticalPotential[i] = hn::Set(d, T(f.bicomplex->criticalPotential[i]));
+                leadLog[i] = hn::Set(d, T(f.bicomplex->leadLog[i]));
+                componentBinomial[i] = f.bicomplex->binomial[i];
+                inverseLead[i] = hn::Set(d, T(f.bicomplex->inverseLead[i]));
+                pullBackLimit[i] = hn::Set(d, T(f.bicomplex->pullBackLimit[i]));
+                const double critical = f.bicomplex->criticalPotential[i];
+                expm1Critical[i] = hn::Set(d, T(std::expm1(critical)));
             }
+            logDegree = hn::Set(d, T(std::log(double(f.degree))));
+            if (f.bicomplex->reference) bicomplexReference = &f.bicomplex->reference->set;
         } else {
             componentEscapeRadiusSquared[0] = componentEscapeRadiusSquared[1] = hn::Zero(d);
+            criticalPotential[0] = criticalPotential[1] = leadLog[0] = leadLog[1] = hn::Zero(d);
+            inverseLead[0] = inverseLead[1] = pullBackLimit[0] = pullBackLimit[1] = hn::Zero(d);
+            expm1Critical[0] = expm1Critical[1] = hn::Zero(d);
+            logDegree = hn::Zero(d);
         }
         for (double a : f.realCoefficients)
             realCoefficients.push_back(hn::Set(d, T(a)));

@@ -120,6 +120,12 @@ std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Pr
         bicomplex.coefficients[i] = set.componentCoefficients(i);
         bicomplex.escapeRadiusSquared[i] =
             set.componentEscapeRadius(i) * set.componentEscapeRadius(i);
+        bicomplex.criticalPotential[i] = set.component(i).criticalPotential();
+        bicomplex.leadLog[i] = set.component(i).leadLog();
+        bicomplex.binomial[i] = set.component(i).binomial();
+        bicomplex.inverseLead[i] = 1 / set.component(i).leadModulus();
+        bicomplex.pullBackLimit[i] = set.component(i).pullBackLimit(set.maxIterations());
+        if (!set.component(i).connected()) bicomplex.reference = fractal.sharedHypercomplex();
     }
     // Every escape of |q| then has a component beyond its escape radius: |a|^2 <= R_1^2 and
     // |b|^2 <= R_2^2 give |q|^2 <= (R_1^2 + R_2^2) / 2. The cap keeps float lanes' running

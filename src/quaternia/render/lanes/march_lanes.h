@@ -57,6 +57,15 @@ struct LaneFractal {
     struct Bicomplex {
         std::array<std::vector<std::complex<double>>, 2> coefficients;  // lowest degree first
         std::array<double, 2> escapeRadiusSquared{};
+        // A component whose K is disconnected (duplex_component.h): its G*, ln|a_d| / (d - 1),
+        // and the scalar reference, which the lanes ask for the points whose potential is below
+        // 2 G* (the pull-back). Both components connected: no reference is asked.
+        std::array<double, 2> criticalPotential{}, leadLog{};
+        // Binomial components (a_d w^d + a_0) pull back in the lanes: 1 / |a_d| and the deepest
+        // pull-back (DuplexComponent::pullBackLimit); the others ask the reference.
+        std::array<bool, 2> binomial{};
+        std::array<double, 2> inverseLead{}, pullBackLimit{};
+        std::shared_ptr<const HypercomplexFractal> reference;
     };
     std::optional<Bicomplex> bicomplex;
     // An octonion real form folded onto the quaternions (octonion_fold.h) through a slice on
