@@ -12,8 +12,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-targets=(formula numbers scene explore_query png_read)
-declare -A max_len=([formula]=256 [numbers]=96 [scene]=2048 [explore_query]=1024 [png_read]=4096)
+targets=(formula numbers scene explore_query png_read compute)
+declare -A max_len=([formula]=256 [numbers]=96 [scene]=2048 [explore_query]=1024 [png_read]=4096 [compute]=512)
+# compute runs meshes of the slow algebras under the sanitizers (fuzz/CMakeLists.txt)
+declare -A timeout=([compute]=60)
 
 cmake -S fuzz -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE= -DCMAKE_CXX_COMPILER=clang++-14 \
   >/dev/null
@@ -42,7 +44,7 @@ for target in "${targets[@]}"; do
   log=build-fuzz/campaign/$target.log
   start=$(date +%s)
   build-fuzz/${target}_fuzzer -runs="$runs" -reload=0 -max_total_time="$seconds" \
-    -max_len="${max_len[$target]}" -timeout=10 -rss_limit_mb=2048 \
+    -max_len="${max_len[$target]}" -timeout="${timeout[$target]:-10}" -rss_limit_mb=2048 \
     -dict="fuzz/dict/$target.dict" -print_final_stats=1 -artifact_prefix="$findings/" \
     "$corpus" "fuzz/corpus/$target" >"$log" 2>&1 || true
   elapsed=$(( $(date +%s) - start ))
