@@ -278,6 +278,7 @@ DistanceEstimate HypercomplexJuliaSet::bicomplexEstimate(const Hypercomplex& z0)
     result.smoothIteration = smoothEscapeCount(n, q2, formula_.degree());
     const double estimateRadiusSquared = continuationRadiusSquared<double>(formula_.degree());
     double distanceSquared = 0;  // of the duplex point to K_1 x K_2
+    bool componentEscaped = false;
     int iterations = n;
     for (size_t i = 0; i < 2; ++i) {
         // A component not beyond its escape radius by iteration N counts as in K_i (distance 0);
@@ -292,6 +293,7 @@ DistanceEstimate HypercomplexJuliaSet::bicomplexEstimate(const Hypercomplex& z0)
         }
         iterations = std::max(iterations, k);
         const double r2 = std::norm(w[i]);
+        componentEscaped = componentEscaped || r2 > R2;
         if (r2 > R2 && !components_[i].connected()) {
             // A disconnected K_i: the estimate is no bound near the escaping critical points'
             // preimages (duplex_component.h).
@@ -305,9 +307,11 @@ DistanceEstimate HypercomplexJuliaSet::bicomplexEstimate(const Hypercomplex& z0)
     }
     result.iterations = iterations;
     // |D(q)| = sqrt(2) |q|: the duplex distance over sqrt(2). Where neither component is seen
-    // to escape (a bailout below their escape radii), the Lipschitz distance still holds.
+    // to escape (a bailout below their escape radii), the Lipschitz distance still holds. (A
+    // disconnected component's bound can be 0 beside an escape: a point that close to K_N is
+    // left to the march's membership steps, as the lanes leave it.)
     result.distance =
-        distanceSquared > 0 ? std::sqrt(0.5 * distanceSquared) : lipschitzDistance(z0).distance;
+        componentEscaped ? std::sqrt(0.5 * distanceSquared) : lipschitzDistance(z0).distance;
     return result;
 }
 

@@ -265,8 +265,6 @@ HWY_INLINE void estimateBicomplex(D d, const LaneConstants<D>& k,
                 db = b[j].distance(d, k, 1, orbitB[j], pullBack);
         result[j].inside = inside[j];
         V distance = hn::Sqrt(half * hn::MulAdd(da, da, db * db));
-        // Where a disconnected component leaves both at 0, the reference's Lipschitz distance.
-        if (k.bicomplexReference) pullBack = hn::Or(pullBack, distance == hn::Zero(d));
         pullBack = hn::AndNot(inside[j], hn::And(pullBack, live[j]));
         if (!hn::AllFalse(d, pullBack))
             distance = pulledBackDistance(d, k, q[j], pullBack, distance);
