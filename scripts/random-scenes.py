@@ -252,6 +252,10 @@ def main():
                         outcomes[outcome] += 1
                         by_command[(command, outcome)] += 1
                         line = "quaternia " + " ".join(shlex.quote(a) for a in args)
+                        done = sum(outcomes.values())
+                        if done % 1000 == 0:
+                            print(f"{done} scenes: " + ", ".join(
+                                f"{k} {v}" for k, v in sorted(outcomes.items())), flush=True)
                         if seconds > slowest[0]:
                             slowest = (seconds, line)
                         if outcome not in ("ok", "refused"):
