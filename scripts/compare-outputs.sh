@@ -9,6 +9,7 @@ set -uo pipefail
 before=${1:?usage: scripts/compare-outputs.sh BEFORE AFTER [ISA...]}
 after=${2:?usage: scripts/compare-outputs.sh BEFORE AFTER [ISA...]}
 shift 2
+before=$(realpath "$before") after=$(realpath "$after")  # the runs change directory
 isas=("${@:-avx2 best}")
 [ $# -eq 0 ] && isas=(avx2 best)
 work=$(mktemp -d)

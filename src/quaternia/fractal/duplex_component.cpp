@@ -17,20 +17,6 @@ constexpr double kPotentialRadius = 1e8;
 // Orbits followed this long without reaching it count as bounded (G = 0).
 constexpr int kPotentialOrbit = 4000;
 
-Complex horner(const std::vector<Complex>& a, Complex w) {
-    Complex value = a.back();
-    for (size_t k = a.size() - 1; k-- > 0;)
-        value = value * w + a[k];
-    return value;
-}
-
-Complex hornerDerivative(const std::vector<Complex>& a, Complex w) {
-    Complex value = 0;
-    for (size_t k = a.size() - 1; k >= 1; --k)
-        value = value * w + double(k) * a[k];
-    return value;
-}
-
 // (ln r + lead) / d^m in logarithms: d^m overflows long before m reaches the orbit's cap.
 double potentialAt(double logRadius, double lead, int m, int degree) {
     const double level = logRadius + lead;
@@ -40,28 +26,26 @@ double potentialAt(double logRadius, double lead, int m, int degree) {
 }  // namespace
 
 DuplexComponent::DuplexComponent(std::vector<Complex> coefficients, double escapeRadius, double rho)
-    : coefficients_(std::move(coefficients)), escapeRadius_(escapeRadius), rho_(rho) {
-    degree_ = int(coefficients_.size()) - 1;
+    : polynomial_(std::move(coefficients)), escapeRadius_(escapeRadius), rho_(rho) {
+    const std::vector<Complex>& terms = polynomial_.coefficients();
+    degree_ = polynomial_.degree();
     // The duplex form's coefficients come from a discrete Fourier transform: those of the
     // degrees a formula such as z^3 + c lacks are rounding noise (1e-16), far below the rounding
     // of the iteration itself, and are left out of the majorant.
     double largest = 0;
-    for (const Complex& a : coefficients_)
+    for (const Complex& a : terms)
         largest = std::max(largest, std::abs(a));
     binomial_ = true;
-    for (size_t k = 0; k < coefficients_.size(); ++k) {
-        const double modulus = std::abs(coefficients_[k]);
+    for (size_t k = 0; k < terms.size(); ++k) {
+        const double modulus = std::abs(terms[k]);
         const bool noise = modulus <= 1e-12 * largest;
         moduli_.push_back(noise ? 0.0 : modulus);
-        if (k > 0 && k + 1 < coefficients_.size() && !noise) binomial_ = false;
+        if (k > 0 && k + 1 < terms.size() && !noise) binomial_ = false;
     }
     leadLog_ = std::log(moduli_.back()) / (degree_ - 1);
     // G at each critical point (a root of P'; Aberth-Ehrlich clusters a multiple root, whose
     // members have the same G to rounding), over-estimated by a part in 10^6.
-    std::vector<Complex> derivative;
-    for (size_t k = 1; k < coefficients_.size(); ++k)
-        derivative.push_back(double(k) * coefficients_[k]);
-    for (const Complex& omega : polynomialRoots(ComplexPolynomial(derivative))) {
+    for (const Complex& omega : polynomialRoots(polynomial_.derivativePolynomial())) {
         Complex w = omega;
         for (int m = 0; m < kPotentialOrbit; ++m) {
             if (std::abs(w) >= kPotentialRadius) {
@@ -70,7 +54,7 @@ DuplexComponent::DuplexComponent(std::vector<Complex> coefficients, double escap
                              (1 + 1e-6) * potentialAt(std::log(std::abs(w)), leadLog_, m, degree_));
                 break;
             }
-            w = horner(coefficients_, w);
+            w = polynomial_.evaluate(w);
         }
     }
     // G_Q(rho): the majorant's orbit of rho (it grows: rho is past P's escape radius).
@@ -151,8 +135,8 @@ double DuplexComponent::distance(Complex w0, int maxIterations) const {
         // (the escape-time estimate's rule, HypercomplexJuliaSet::bicomplexEstimate).
         if (k + 1 >= maxIterations && !(r2 > escapeRadius_ * escapeRadius_)) return 0;
         if (r2 >= radiusSquared || k >= cap) break;
-        slope *= std::abs(hornerDerivative(coefficients_, w));
-        w = horner(coefficients_, w);
+        slope *= std::abs(polynomial_.derivative(w));
+        w = polynomial_.evaluate(w);
     }
     const int m = int(moduli.size()) - 1;
     const double logRadius = std::log(moduli[size_t(m)]);

@@ -22,6 +22,8 @@
 #include <complex>
 #include <vector>
 
+#include "quaternia/algebra/complex_polynomial.h"
+
 namespace quaternia {
 
 class DuplexComponent {
@@ -62,7 +64,7 @@ class DuplexComponent {
     // The largest e >= 0 with Q(r + e) - Q(r) <= target.
     double inverseGrowth(double r, double target) const;
 
-    std::vector<Complex> coefficients_;
+    ComplexPolynomial polynomial_;
     std::vector<double> moduli_;  // |a_k|: Q's coefficients
     int degree_ = 2;
     double escapeRadius_ = 2, rho_ = 4;
