@@ -3,6 +3,7 @@
 # the whole library again with clang and the sanitizers.
 set(QUATERNIA_CORE_SOURCES
   quaternia/algebra/polynomial.cpp
+  quaternia/algebra/top_degree_minimum.cpp
   quaternia/algebra/complex_polynomial.cpp
   quaternia/dynamics/basins.cpp
   quaternia/dynamics/cycle.cpp
@@ -11,9 +12,11 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/dynamics/periodic_points.cpp
   quaternia/dynamics/mandelbrot.cpp
   quaternia/plane/plane_render.cpp
-  quaternia/algebra/formula.cpp
+  quaternia/algebra/formula_parse.cpp
+  quaternia/algebra/formula_expand.cpp
   quaternia/algebra/formula_program.cpp
   quaternia/algebra/hypercomplex.cpp
+  quaternia/algebra/constant_text.cpp
   quaternia/algebra/hypercomplex_formula.cpp
   quaternia/fractal/distance.cpp
   quaternia/fractal/fractal.cpp
@@ -25,6 +28,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/render/march.cpp
   quaternia/render/shade.cpp
   quaternia/render/render.cpp
+  quaternia/render/sample_pattern.cpp
   quaternia/render/render_png.cpp
   quaternia/render/render_exr.cpp
   quaternia/render/adaptive_sampling.cpp
@@ -50,7 +54,14 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/scene/parameters.cpp
   quaternia/scene/parameter_table.cpp
   quaternia/scene/parameter_table_scenery.cpp
+  quaternia/scene/parameter_table_rendering.cpp
+  quaternia/scene/parameter_table_commands.cpp
+  quaternia/scene/parameter_checks.cpp
+  quaternia/scene/parameter_text.cpp
+  quaternia/scene/parameter_help.cpp
+  quaternia/scene/scene_rules.cpp
   quaternia/scene/presets.cpp
+  quaternia/scene/scene_fractal.cpp
   quaternia/scene/scene_file.cpp
   quaternia/scene/toml_values.cpp
   quaternia/scene/interpolation.cpp
@@ -63,7 +74,17 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/mesh/mesher.cpp
   quaternia/mesh/mesh_io.cpp
   quaternia/mesh/mesh_silhouette.cpp
+  quaternia/film/frame_plan.cpp
+  quaternia/film/frame_writer.cpp
+  quaternia/film/film_render.cpp
+  quaternia/film/video_encoder.cpp
+  quaternia/film/poster.cpp
+  quaternia/distribute/work_scheduler.cpp
+  quaternia/distribute/local_worker.cpp
+  quaternia/distribute/in_process_channel.cpp
   quaternia/util/parallel.cpp
+  quaternia/util/edit_distance.cpp
   quaternia/util/atomic_file.cpp
   quaternia/util/memory_budget.cpp
+  quaternia/util/number_format.cpp
 )

@@ -1,17 +1,14 @@
-#include <mpi.h>
-
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
-#include <memory>
 #include <optional>
 
 #include "cmd/mpi_boundary.h"
 #include "cmd/mpi_commands.h"
-#include "cmd/mpi_work.h"
-#include "cmd/video_encoder.h"
-#include "quaternia/image/png_io.h"
-#include "quaternia/render/render_png.h"
+#include "cmd/mpi_report.h"
+#include "quaternia/distribute/work_scheduler.h"
+#include "quaternia/film/film_render.h"
+#include "quaternia/film/frame_plan.h"
+#include "quaternia/film/video_encoder.h"
 #include "quaternia/scene/animation.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
@@ -20,32 +17,21 @@
 #include "quaternia/util/error.h"
 
 namespace quaternia {
-namespace {
-
-namespace fs = std::filesystem;
-
-// Rank 0's list of the frames to render, on every rank.
-void broadcastFrames(std::vector<int64_t>& frames) {
-    uint64_t count = frames.size();
-    MPI_Bcast(&count, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
-    frames.resize(count);
-    if (count > 0) MPI_Bcast(frames.data(), int(count), MPI_INT64_T, 0, MPI_COMM_WORLD);
-}
-
-}  // namespace
 
 int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
     Scene film;
     int64_t count = 0;
-    std::pair<int64_t, int64_t> range;
+    FrameRange range;
     std::optional<VideoFormat> format;
     std::string ffmpeg;
+    FrameDirectory directory;
     std::vector<int64_t> frames;
     const int setUp = setUpOnEveryRank(mpi, [&] {
         film = sceneFromOptions(options);
         validateAnimation(film);
         count = filmFrameCount(film);
         range = parseFrameRange(options.frames, count);
+        directory = FrameDirectory{options.output, count};
         if (options.printFrame) {
             if (*options.printFrame < 1 || *options.printFrame > count)
                 throw UserError("--print-frame",
@@ -59,18 +45,18 @@ int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
             format = videoFormatOf(options.video);
             ffmpeg = findFfmpeg();
         }
-        checkFrames(film, range.first, range.second, format.has_value());
+        checkFrames(film, range, format.has_value());
         // Each rank renders one frame at a time (rank 0 on its local worker thread).
         requireFilmMemory(film, range, format.has_value() && mpi.rank() == 0, 1, options);
-        prepareDirectory(options.output, range.first, range.second, count);
-        frames = framesToRender(options, count, range);
+        prepareDirectory(directory, range);
+        frames = framesToRender(directory, range, options.overwrite);
     });
     if (setUp != 0) return setUp;
     if (options.printFrame) {
         // The film was checked on every rank; rank 0 prints, as `quaternia animate` does.
         return mpi.rank() == 0 ? runOrAbort(mpi, [&] { return runAnimateCommand(options); }) : 0;
     }
-    broadcastFrames(frames);
+    mpi.broadcastFromRankZero(frames);  // rank 0's list: the files it saw
 
     return runOrAbort(mpi, [&] {
         InterruptScope interrupt;
@@ -79,25 +65,23 @@ int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
         items.count = int64_t(frames.size());
         items.run = [&](int64_t item) {
             const int64_t frame = frames[size_t(item)];
-            const Scene scene = sceneAtFrame(film, frame);
             RenderOptions renderOptions;
             renderOptions.threads = options.threads;
             renderOptions.cancel = interrupt.flag();
             renderOptions.workspace = &workspace;
-            RenderResult result = renderForPng(scene, renderOptions);
-            if (!result.completed) return std::vector<uint8_t>();
-            writeFileAtomically((fs::path(options.output) / frameFileName(frame, count)).string(),
-                                encodeRenderPng(result, scene.render.bitDepth));
+            if (!renderFrameFile(film, directory, frame, renderOptions))
+                return std::vector<uint8_t>();
             return MessageWriter().put(frame).bytes();
         };
-        if (mpi.rank() != 0) return workOnItems(items, interrupt.flag()) ? 0 : 130;
+        MpiChannel channel(mpi);
+        if (mpi.rank() != 0) return workOnItems(channel, items, interrupt.flag()) ? 0 : 130;
 
         int64_t rendered = 0;
         items.take = [&](int, const std::vector<uint8_t>&) { ++rendered; };
         ProgressBar bar("animating", !options.json && ProgressBar::stderrIsTerminal());
         items.progress = progressOn(bar, "frames");
         const auto start = std::chrono::steady_clock::now();
-        const std::vector<RankShare> shares = handOutWork(mpi, items, interrupt.flag());
+        const std::vector<RankShare> shares = handOutWork(channel, items, interrupt.flag());
         bar.finish();
         if (shares.empty()) {
             std::fprintf(stderr,
@@ -110,9 +94,7 @@ int runMpiAnimate(const MpiSession& mpi, const AnimateCommandOptions& options) {
             const Scene first = sceneAtFrame(film, range.first);
             VideoEncoder encoder(ffmpeg, AtomicFile(options.video), *format, first.render.width,
                                  first.render.height, film.animation.fps);
-            for (int64_t frame = range.first; frame <= range.second; ++frame)
-                encoder.addFrame(
-                    readPng((fs::path(options.output) / frameFileName(frame, count)).string()));
+            encodeFrameFiles(encoder, directory, range);
             encoder.finish();
         }
         FilmStats stats;

@@ -1,7 +1,5 @@
 #include "cmd/mpi_boundary.h"
 
-#include <mpi.h>
-
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -40,8 +38,7 @@ int setUpOnEveryRank(const MpiSession& mpi, const std::function<void()>& setUp) 
         status = 1;
         message = std::string("quaternia: internal error: ") + e.what();
     }
-    int rankZeroStatus = status;
-    MPI_Bcast(&rankZeroStatus, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    const int rankZeroStatus = mpi.broadcastFromRankZero(status);
     const int agreed = mpi.agree(status);
     if (status != 0 && (mpi.rank() == 0 || rankZeroStatus == 0)) {
         if (mpi.rank() == 0) {

@@ -5,10 +5,11 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
-#include "cmd/mpi_channel.h"
+#include "quaternia/distribute/mpi_channel.h"
 
 namespace quaternia {
 

@@ -6,12 +6,14 @@
 
 #include "cmd/mpi_boundary.h"
 #include "cmd/mpi_commands.h"
-#include "cmd/mpi_work.h"
-#include "cmd/poster.h"
+#include "cmd/mpi_report.h"
 #include "cmd/render_command.h"
+#include "quaternia/distribute/work_scheduler.h"
+#include "quaternia/film/poster.h"
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/atomic_file.h"
 #include "quaternia/util/error.h"
 
@@ -89,7 +91,7 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
     const int setUp = setUpOnEveryRank(mpi, [&] {
         scene = sceneFromOptions(options);
         validateScene(scene);
-        Fractal::fromScene(scene);
+        fractalFromScene(scene);
         // The bands travel and are assembled as PNG rows; EXR's passes are quaternia render's.
         if (isExrPath(options.output))
             throw UserError("-o", "-o: quaternia-mpi writes PNG; write " + options.output +
@@ -126,7 +128,8 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
             if (!rendered) return std::vector<uint8_t>();
             return unitMessage(*rendered);
         };
-        if (mpi.rank() != 0) return workOnItems(items, interrupt.flag()) ? 0 : 130;
+        MpiChannel channel(mpi);
+        if (mpi.rank() != 0) return workOnItems(channel, items, interrupt.flag()) ? 0 : 130;
 
         PosterAssembler assembler(layout, format, *colourFile, depthFile ? &*depthFile : nullptr,
                                   windowBandsFor(layout, mpi.size()), options.threads);
@@ -146,7 +149,7 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
         ProgressBar bar("rendering", !options.json && ProgressBar::stderrIsTerminal());
         items.progress = progressOn(bar, "tiles");
         const auto start = std::chrono::steady_clock::now();
-        const std::vector<RankShare> shares = handOutWork(mpi, items, interrupt.flag());
+        const std::vector<RankShare> shares = handOutWork(channel, items, interrupt.flag());
         bar.finish();
         if (shares.empty()) return reportInterrupted();
         std::optional<AtomicFile> rgb = assembler.finish();

@@ -1,4 +1,4 @@
-#include "cmd/poster.h"
+#include "quaternia/film/poster.h"
 
 #include <gtest/gtest.h>
 

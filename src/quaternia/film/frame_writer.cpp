@@ -1,6 +1,10 @@
-#include "cmd/frame_writer.h"
+#include "quaternia/film/frame_writer.h"
 
 #include <utility>
+
+#include "quaternia/image/png_io.h"
+#include "quaternia/render/render_png.h"
+#include "quaternia/util/atomic_file.h"
 
 namespace quaternia {
 
@@ -55,6 +59,20 @@ void FrameWriter::finish() {
     std::unique_lock lock(mutex_);
     changed_.wait(lock, [&] { return (queue_.empty() && !busy_) || error_; });
     rethrow();
+}
+
+FrameWriter::Handler frameFileHandler(const FrameDirectory& directory, VideoEncoder* encoder) {
+    return [directory, encoder](FrameWork& work) {
+        const std::string path = directory.framePath(work.frame);
+        if (work.rendered) {
+            std::vector<uint8_t> png = encodeRenderPng(*work.rendered, work.bitDepth);
+            work.rendered.reset();  // the samples go before the PNG is decoded for the encoder
+            writeFileAtomically(path, png);
+            if (encoder != nullptr) encoder->addFrame(decodePng(png));
+        } else if (encoder != nullptr) {
+            encoder->addFrame(readPng(path));
+        }
+    };
 }
 
 }  // namespace quaternia

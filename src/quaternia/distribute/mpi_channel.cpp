@@ -1,8 +1,10 @@
-#include "cmd/mpi_channel.h"
+#include "quaternia/distribute/mpi_channel.h"
 
 #include <mpi.h>
 
 #include <climits>
+#include <cstdlib>
+#include <stdexcept>
 #include <thread>
 
 namespace quaternia {
@@ -24,12 +26,24 @@ int MpiSession::agree(int status) const {
     return agreed;
 }
 
+int MpiSession::broadcastFromRankZero(int value) const {
+    MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    return value;
+}
+
+void MpiSession::broadcastFromRankZero(std::vector<int64_t>& values) const {
+    uint64_t count = values.size();
+    MPI_Bcast(&count, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    values.resize(count);
+    if (count > 0) MPI_Bcast(values.data(), int(count), MPI_INT64_T, 0, MPI_COMM_WORLD);
+}
+
 void MpiSession::abort(int code) const {
     MPI_Abort(MPI_COMM_WORLD, code);
     std::abort();  // MPI_Abort does not return; this tells the compiler so
 }
 
-void sendMessage(int destination, MessageTag tag, const std::vector<uint8_t>& bytes) {
+void MpiChannel::send(int destination, MessageTag tag, const std::vector<uint8_t>& bytes) {
     if (bytes.size() > size_t(INT_MAX)) throw std::length_error("MPI message over 2 GiB");
     MPI_Send(bytes.data(), int(bytes.size()), MPI_BYTE, destination, int(tag), MPI_COMM_WORLD);
 }
@@ -66,11 +80,12 @@ std::optional<Message> receiveIfReady(int source, int tag, const std::atomic<boo
 
 }  // namespace
 
-std::optional<Message> pollMessage(const std::atomic<bool>* cancel) {
+std::optional<Message> MpiChannel::poll(const std::atomic<bool>* cancel) {
     return receiveIfReady(MPI_ANY_SOURCE, MPI_ANY_TAG, cancel);
 }
 
-std::optional<Message> waitMessage(int source, MessageTag tag, const std::atomic<bool>* cancel) {
+std::optional<Message> MpiChannel::wait(int source, MessageTag tag,
+                                        const std::atomic<bool>* cancel) {
     for (;;) {
         if (auto message = receiveIfReady(source, int(tag), cancel)) return message;
         if (cancel != nullptr && cancel->load()) return std::nullopt;

@@ -1,4 +1,4 @@
-#include "cmd/video_encoder.h"
+#include "quaternia/film/video_encoder.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -18,6 +18,7 @@
 #include <filesystem>
 
 #include "quaternia/util/error.h"
+#include "quaternia/util/number_format.h"
 
 extern char** environ;
 
@@ -55,8 +56,7 @@ std::string findFfmpeg() {
 
 std::vector<std::string> ffmpegArguments(VideoFormat format, int width, int height, double fps,
                                          const std::string& output) {
-    char rate[64];
-    std::snprintf(rate, sizeof rate, "%.17g", fps);
+    const std::string rate = shortestNumber(fps);  // reads back to the very fps
     std::vector<std::string> args = {
         // -xerror: an output error (a full disk, a file-size limit) that ffmpeg would only
         // log, such as one writing the container's trailer, ends it with a failure instead.

@@ -1,4 +1,4 @@
-#include "cmd/poster.h"
+#include "quaternia/film/poster.h"
 
 #include <algorithm>
 #include <cstring>
@@ -31,7 +31,7 @@ std::optional<PosterUnit> renderPosterUnit(const Scene& scene, const PosterLayou
     RenderOptions unitOptions = options;
     const Tile window = layout.window(unit);
     unitOptions.window = window;
-    unitOptions.opaqueSamples = true;  // an opaque render comes as its PNG samples
+    unitOptions.opaquePngPixels = true;  // an opaque render comes as its PNG pixels
     unitOptions.depth = format.depth;
     RenderResult result = render(scene, unitOptions);
     if (!result.completed) return std::nullopt;
@@ -39,8 +39,8 @@ std::optional<PosterUnit> renderPosterUnit(const Scene& scene, const PosterLayou
     out.unit = unit;
     out.stats = result.stats;
     const size_t width = size_t(window.x1 - window.x0), rows = size_t(window.y1 - window.y0);
-    if (!result.samples.empty()) {
-        out.colour.assign(result.samples.begin(), result.samples.end());
+    if (!result.pngPixels.empty()) {
+        out.colour.assign(result.pngPixels.begin(), result.pngPixels.end());
     } else {
         // Coverage: the float image's rows quantised with alpha, as encodePng does.
         const size_t rowBytes = width * format.colourPixelBytes();

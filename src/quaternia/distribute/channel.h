@@ -1,7 +1,7 @@
-// The few MPI calls quaternia-mpi makes, in one place: the session, binary messages of bytes,
-// and waiting for a message without spinning. OpenMPI's blocking receive polls on a core while
-// it waits; here a rank sleeps between probes (kPollInterval), so that a rank waiting for work
-// or for a result leaves the core to the renders beside it.
+// How the ranks of a distributed job talk: binary messages, by tag, between numbered ranks
+// (0 .. size() - 1). The work scheduler (work_scheduler.h) is written against this interface;
+// the MPI channel (mpi_channel.h, only in quaternia-mpi) and the in-process channel (threads of
+// one process, in_process_channel.h, for tests) implement it.
 //
 // Messages carry plain structs as bytes (MessageWriter, MessageReader): the ranks of one job run
 // the same binary on machines of one architecture, as MPI jobs do.
@@ -13,40 +13,24 @@
 #include <cstring>
 #include <optional>
 #include <stdexcept>
-#include <string>
 #include <type_traits>
 #include <vector>
 
 namespace quaternia {
 
+// How long a rank with nothing to do sleeps before it looks for a message again: a rank waiting
+// for work or for a result leaves its core to the renders beside it.
 inline constexpr std::chrono::microseconds kPollInterval{200};
 
-// The messages of quaternia-mpi, by tag.
+// The messages of the work scheduler, by tag.
 enum class MessageTag : int {
     Ready = 1,  // worker -> 0: free for work (the first time; a result says it after that)
     Result,     // worker -> 0: a unit or frame done, and free for the next
     Assign,     // 0 -> worker: the next unit or frame, or kNoMoreWork
     Summary,    // worker -> 0: what it did, after kNoMoreWork
+    Lost,       // the channel -> 0: the source rank is gone; nothing more comes from it
 };
 inline constexpr int64_t kNoMoreWork = -1;
-
-// MPI_Init_thread (funnelled: only the main thread calls MPI) and MPI_Finalize.
-class MpiSession {
-  public:
-    MpiSession(int& argc, char**& argv);
-    ~MpiSession();
-    MpiSession(const MpiSession&) = delete;
-    MpiSession& operator=(const MpiSession&) = delete;
-    int rank() const { return rank_; }
-    int size() const { return size_; }
-    // Every rank's `status` agreed: the largest (collective: every rank calls it).
-    int agree(int status) const;
-    // Ends the whole job now (MPI_Abort) with `code`.
-    [[noreturn]] void abort(int code) const;
-
-  private:
-    int rank_ = 0, size_ = 1;
-};
 
 struct Message {
     int source = 0;
@@ -54,13 +38,22 @@ struct Message {
     std::vector<uint8_t> bytes;
 };
 
-void sendMessage(int destination, MessageTag tag, const std::vector<uint8_t>& bytes);
-// The next message from any rank with any tag if one has arrived, else nothing; nothing too if
-// `cancel` is set while its bytes are still coming (their sender may have died).
-std::optional<Message> pollMessage(const std::atomic<bool>* cancel);
-// Waits (sleeping between probes) for a message from `source` with `tag`; nothing if `cancel`
-// is set first.
-std::optional<Message> waitMessage(int source, MessageTag tag, const std::atomic<bool>* cancel);
+class Channel {
+  public:
+    virtual ~Channel() = default;
+    virtual int rank() const = 0;
+    virtual int size() const = 0;
+    virtual void send(int destination, MessageTag tag, const std::vector<uint8_t>& bytes) = 0;
+    // The next message from any rank with any tag if one has arrived, else nothing; nothing too
+    // if `cancel` is set while its bytes are still coming (their sender may have died). A
+    // channel that can tell a rank has gone delivers a Lost message from it, after every
+    // message that rank sent.
+    virtual std::optional<Message> poll(const std::atomic<bool>* cancel) = 0;
+    // Waits (without spinning) for a message from `source` with `tag`; nothing if `cancel` is
+    // set first, or if this rank itself has been lost.
+    virtual std::optional<Message> wait(int source, MessageTag tag,
+                                        const std::atomic<bool>* cancel) = 0;
+};
 
 // Plain values appended as bytes, and read back in the same order.
 class MessageWriter {
@@ -107,7 +100,7 @@ class MessageReader {
 
   private:
     void need(size_t size) const {
-        if (size > bytes_.size() - at_) throw std::runtime_error("truncated MPI message");
+        if (size > bytes_.size() - at_) throw std::runtime_error("truncated message between ranks");
     }
     const std::vector<uint8_t>& bytes_;
     size_t at_ = 0;

@@ -1,6 +1,7 @@
 // The thread that writes a film's frames while the next one renders: frames are handed over in
 // order through a queue of at most `capacity` of them (each a whole frame's samples, so the
-// queue bounds the memory), and handled in that order.
+// queue bounds the memory), and handled in that order. frameFileHandler is what a film does
+// with each: its PNG file, and the video encoder's frame.
 #pragma once
 
 #include <condition_variable>
@@ -12,6 +13,8 @@
 #include <optional>
 #include <thread>
 
+#include "quaternia/film/frame_plan.h"
+#include "quaternia/film/video_encoder.h"
 #include "quaternia/render/render.h"
 
 namespace quaternia {
@@ -50,5 +53,11 @@ class FrameWriter {
     std::exception_ptr error_;
     std::thread thread_;
 };
+
+// A film's handler: a rendered frame's PNG written whole to its file in `directory` (renamed
+// into place, so that a failed write leaves the old file or none, never half of one) and, where
+// there is an encoder, handed to it; a frame not rendered (its file exists) is read back for the
+// encoder. The encoder, if any, must outlive the handler's use.
+FrameWriter::Handler frameFileHandler(const FrameDirectory& directory, VideoEncoder* encoder);
 
 }  // namespace quaternia
