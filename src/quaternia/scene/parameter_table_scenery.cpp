@@ -1,7 +1,9 @@
 // The table entries of the scene around the set: the lights besides the key light
 // ([light1] .. [light7], each section built by the same function), the set's material
 // ([material]) and the ground plane ([ground]).
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "quaternia/scene/parameter_builders.h"
 
@@ -57,17 +59,11 @@ void appendLight(std::vector<Parameter>& table, std::size_t index) {
                                   "is 0.27): the size of its soft shadows' penumbrae"));
 }
 
-}  // namespace
-
-std::vector<Parameter> sceneryParameters() {
+// [material]: what the surface of the set is made of: reflection, gloss and glass.
+std::vector<Parameter> materialParameters() {
     using S = Scene;
     using M = MaterialSettings;
-    using G = GroundSettings;
-    std::vector<Parameter> table;
-    for (std::size_t i = 0; i < std::size_t(kExtraLights); ++i)
-        appendLight(table, i);
-    const std::vector<Parameter> rest = {
-        // [material]
+    return {
         realParameter("material", "reflectivity", &S::material, &M::reflectivity, 0, 0, 1,
                       "Reflectance of the surface at normal incidence, rising to 1 at grazing "
                       "angles (Schlick's Fresnel); 1 is a mirror"),
@@ -91,7 +87,14 @@ std::vector<Parameter> sceneryParameters() {
                          "Fixed steps across the set's bounding sphere that refracted rays take "
                          "inside the set (no distance estimate holds inside); gaps narrower than "
                          "a step are crossed as glass"),
-        // [ground]
+    };
+}
+
+// [ground]: a plane under the set, to stand on, reflect it or catch its shadow.
+std::vector<Parameter> groundParameters() {
+    using S = Scene;
+    using G = GroundSettings;
+    return {
         booleanParameter("ground", "enabled", &S::ground, &G::enabled, false,
                          "Whether a horizontal ground plane lies under the set"),
         realParameter("ground", "height", &S::ground, &G::height, -1.2, -1e3, 1e3,
@@ -105,7 +108,19 @@ std::vector<Parameter> sceneryParameters() {
                          "Draw the ground only where the set shadows it, as alpha over the "
                          "background (for compositing)"),
     };
-    table.insert(table.end(), rest.begin(), rest.end());
+}
+
+}  // namespace
+
+std::vector<Parameter> sceneryParameters() {
+    std::vector<Parameter> table;
+    for (std::size_t i = 0; i < std::size_t(kExtraLights); ++i)
+        appendLight(table, i);
+    for (auto section : {materialParameters, groundParameters}) {
+        std::vector<Parameter> entries = section();
+        table.insert(table.end(), std::make_move_iterator(entries.begin()),
+                     std::make_move_iterator(entries.end()));
+    }
     return table;
 }
 

@@ -1,7 +1,7 @@
 // The parameter table: every scene setting declared once, with its name, type, default, range
 // and help. The scene file, --set overrides, --help, validation and the live
 // explorer's controls are all driven from this one table, so a new setting is one line in
-// parameters.cpp and nowhere else.
+// parameter_table*.cpp (its section's function) and nowhere else.
 //
 // Names are "section.key", e.g. "render.width". Values travel as ParameterValue; setParameter
 // validates a value (type, finiteness, range, choices) before it touches the Scene, so a Scene
@@ -11,7 +11,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -63,8 +62,8 @@ struct Parameter {
     std::function<ParameterValue(const Scene&)> read;
 };
 
-// Every parameter, grouped by section in the order fractal, slice, camera, render, shading, plane,
-// mesh, orbit, cycles.
+// Every parameter, grouped by section in the order fractal, slice, camera, render, shading,
+// light1 .. light7, material, ground, plane, mesh, orbit, cycles, animation.
 // Builds the table (parameter_table.cpp); everything else reads it through parameterTable().
 std::vector<Parameter> buildParameterTable();
 
@@ -74,12 +73,9 @@ const std::vector<std::string>& parameterSections();
 // nullptr if `name` ("section.key") is not in the table.
 const Parameter* findParameter(std::string_view name);
 
-// Levenshtein distance (insertions, deletions and substitutions of single bytes); a distance
-// above `bound` is reported as bound + 1 (and found sooner).
-std::size_t editDistance(std::string_view a, std::string_view b,
-                         std::size_t bound = std::numeric_limits<std::size_t>::max());
 // The table name closest to `name`, comparing both the whole name and the key alone (so that
-// "width" or "image.width" suggest "render.width"). Ties go to the earlier table entry. Only the
+// "width" or "image.width" suggest "render.width"). Ties go as NearestName's
+// (util/edit_distance.h): to the longer common prefix, then the earlier table entry. Only the
 // first 40 bytes of `name` are compared (also in nearestSectionName).
 std::string nearestParameterName(std::string_view name);
 // The section closest to `section`.
@@ -108,7 +104,8 @@ void setParameter(Scene& scene, std::string_view name, const ParameterValue& val
 // Among them: fractal.c has as many components as fractal.algebra's dimension; slice.origin and
 // slice.axes are only for the 8-component algebras, which take none of slice.normal,
 // slice.distance, slice.left, slice.right and slice.angles but their defaults; slice.axes holds
-// three independent directions.
+// three independent directions. The rules, one function each and in the order checked, are
+// sceneRules() (scene_rules.h); the first that the scene breaks is reported.
 void validateScene(const Scene& scene);
 
 // What the value must be, for messages: "an integer", "an array of 3 numbers", "an array of 4

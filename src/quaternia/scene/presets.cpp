@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "quaternia/util/edit_distance.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
@@ -98,13 +99,13 @@ const Preset* findPreset(std::string_view name) {
 void applyPreset(Scene& scene, std::string_view name) {
     const Preset* preset = findPreset(name);
     if (preset == nullptr) {
-        // The nearest name by edits; ties go to the earlier preset.
-        const auto& presets = scenePresets();
-        auto nearest = std::min_element(presets.begin(), presets.end(), [&](auto& a, auto& b) {
-            return editDistance(name, a.name) < editDistance(name, b.name);
-        });
+        // Suggested as an unknown scene key is (NearestName): by edits, then the longer common
+        // prefix, then the earlier preset.
+        std::vector<std::string> names;
+        for (const Preset& candidate : scenePresets())
+            names.push_back(candidate.name);
         throw UserError("preset", "unknown preset '" + std::string(name) + "' (did you mean '" +
-                                      nearest->name + "'?)");
+                                      nearestName(name, names) + "'?)");
     }
     for (const auto& [key, value] : preset->values)
         setParameter(scene, key, value);
