@@ -16,6 +16,7 @@
 #include "quaternia/render/march.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 
 namespace quaternia {
 namespace {
@@ -81,7 +82,7 @@ TEST(BicomplexBrute, EstimateNeverOvershootsThePointsOfKNAheadOnTheRay) {
     // the scalar estimate and every lane target's must not exceed that.
     for (const Case& item : kCases) {
         const Scene scene = sceneOf(item);
-        const Fractal fractal = Fractal::fromScene(scene);
+        const Fractal fractal = fractalFromScene(scene);
         const std::optional<LaneFractal> lanes =
             LaneFractal::fromBicomplex(fractal, Precision::Single);
         ASSERT_TRUE(lanes) << item.name;

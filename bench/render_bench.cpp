@@ -14,6 +14,7 @@
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 
 namespace quaternia {
 namespace {
@@ -21,7 +22,7 @@ namespace {
 // The default scene's fractal, queried at points spread through its bounding ball.
 void BM_DistanceEstimate(benchmark::State& state) {
     Scene scene = defaultScene();
-    Fractal fractal = Fractal::fromScene(scene);
+    Fractal fractal = fractalFromScene(scene);
     std::mt19937 rng(1);
     std::uniform_real_distribution<double> coordinate(-fractal.boundingRadius(),
                                                       fractal.boundingRadius());
@@ -46,7 +47,7 @@ BENCHMARK(BM_DistanceEstimate);
 // the precision (0 single, 1 double). Lane-iterations/s is the throughput of the hot loop.
 void BM_DistanceEstimateLanes(benchmark::State& state) {
     Scene scene = defaultScene();
-    Fractal fractal = Fractal::fromScene(scene);
+    Fractal fractal = fractalFromScene(scene);
     const LaneFractal lanes =
         LaneFractal::from(fractal, state.range(0) ? Precision::Double : Precision::Single);
     std::mt19937 rng(1);
@@ -197,7 +198,7 @@ void BM_FractalFromScene(benchmark::State& state) {
     double x = 0;
     for (auto _ : state) {
         scene.fractal.c.w = -0.2 + 0.01 * std::sin(x += 0.1);
-        const Fractal fractal = Fractal::fromScene(scene);
+        const Fractal fractal = fractalFromScene(scene);
         benchmark::DoNotOptimize(fractal.set().escapeRadius());
     }
 }

@@ -27,6 +27,7 @@
 #include "quaternia/scene/animation.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_file.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
 
 using namespace quaternia;

@@ -1,12 +1,12 @@
-// The numbers of `quaternia orbit` and `quaternia cycles` (number_text.h): --c and --z0 read by
-// parseConstant, and formatQuaternion, whose text those options are documented to read back.
-// A UserError is a clean rejection; an accepted constant must be finite and survive the trip
+// The numbers of `quaternia orbit` and `quaternia cycles` (algebra/constant_text.h): --c and --z0
+// read by parseConstant, and formatQuaternion, whose text those options are documented to read
+// back. A UserError is a clean rejection; an accepted constant must be finite and survive the trip
 // through its printed form to within the 10 digits printed.
 #include <algorithm>
 #include <cmath>
 
-#include "cmd/number_text.h"
 #include "fuzz/fuzz_check.h"
+#include "quaternia/algebra/constant_text.h"
 #include "quaternia/util/error.h"
 
 using namespace quaternia;

@@ -1,5 +1,5 @@
 // Shared by `quaternia orbit` and `quaternia cycles`: the short flags --formula and --c that set
-// [fractal]'s map; reading --c and --z0 and writing numbers is number_text.h's.
+// [fractal]'s map; reading --c and --z0 and writing numbers is algebra/constant_text.h's.
 #pragma once
 
 #include <optional>
@@ -8,7 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cmd/number_text.h"
+#include "quaternia/algebra/constant_text.h"
 #include "quaternia/algebra/polynomial.h"
 #include "quaternia/algebra/quaternion.h"
 #include "quaternia/scene/scene.h"

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "quaternia/scene/presets.h"
+#include "quaternia/util/number_format.h"
 
 namespace quaternia {
 
@@ -71,8 +72,8 @@ int runExploreCommand(const ExploreCommandOptions& options) {
         server,       "--port",    std::to_string(options.port),   "--bind",
         options.bind, "--threads", std::to_string(options.threads)};
     const ExploreConnectionLimits& limits = options.connections;
-    char seconds[32];  // every digit, so that the server gets the very number
-    std::snprintf(seconds, sizeof seconds, "%.17g", limits.requestSeconds);
+    // Digits that read back exactly, so that the server gets the very number.
+    const std::string seconds = shortestNumber(limits.requestSeconds);
     arguments.insert(arguments.end(),
                      {"--connections", std::to_string(limits.total), "--connections-per-address",
                       std::to_string(limits.perAddress), "--request-timeout", seconds,

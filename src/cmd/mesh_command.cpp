@@ -10,6 +10,7 @@
 #include "quaternia/mesh/mesher.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/atomic_file.h"
 
 namespace quaternia {
@@ -101,7 +102,7 @@ int runMeshCommand(const MeshCommandOptions& options) {
     // Every check that can fail runs before the work: the scene, the formula, the format, and
     // whether the output can be written (a temporary beside it, renamed over it at the end).
     validateScene(scene);
-    Fractal::fromScene(scene);
+    fractalFromScene(scene);
     MeshFormat format = meshFormatFromPath(options.output);
     AtomicFile output(options.output);
 

@@ -8,7 +8,9 @@
 #include "quaternia/dynamics/orbit.h"
 #include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/scene/json.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
+#include "quaternia/util/number_format.h"
 
 namespace quaternia {
 namespace {
@@ -28,7 +30,7 @@ std::string pointText(const Scene& scene, const Hypercomplex& q) {
     if (dimension == 4) return formatQuaternion(Quaternion(q[0], q[1], q[2], q[3]));
     std::string text = "[";
     for (int n = 0; n < dimension; ++n)
-        text += (n ? ", " : "") + formatReal(q[size_t(n)]);
+        text += (n ? ", " : "") + roundedNumber(q[size_t(n)], kReportDigits);
     return text + "]";
 }
 
@@ -55,15 +57,16 @@ std::string fateText(const Result& r) {
     switch (r.fate) {
         case OrbitFate::Escapes:
             return "escapes at iteration " + std::to_string(r.escapeIteration) +
-                   " (|z| > escape radius " + formatReal(r.escapeRadius) + ")";
+                   " (|z| > escape radius " + roundedNumber(r.escapeRadius, kReportDigits) + ")";
         case OrbitFate::Periodic:
             return period == 1 ? "fixed point" : "periodic with period " + std::to_string(period);
         case OrbitFate::Preperiodic:
             return "strictly preperiodic with preperiod " + std::to_string(r.preperiod) +
                    " and period " + std::to_string(period);
         case OrbitFate::Attracted:
-            return "attracted to a " + cycle + " (within " + formatReal(r.tolerance) +
-                   " of it from iteration " + std::to_string(r.preperiod) + ")";
+            return "attracted to a " + cycle + " (within " +
+                   roundedNumber(r.tolerance, kReportDigits) + " of it from iteration " +
+                   std::to_string(r.preperiod) + ")";
         case OrbitFate::Undecided:
             return "undecided after " + std::to_string(r.iterations) + " iterations";
     }

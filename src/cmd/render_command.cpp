@@ -9,6 +9,7 @@
 #include "quaternia/render/render_png.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/atomic_file.h"
 #include "quaternia/util/error.h"
 
@@ -104,7 +105,7 @@ int runRenderCommand(const RenderCommandOptions& options) {
     // Every check that can fail runs before the work: the scene, the formula, and whether the
     // outputs can be written (a temporary file beside each, renamed over it at the end).
     validateScene(scene);
-    Fractal::fromScene(scene);
+    fractalFromScene(scene);
     const bool exr = isExrPath(options.output);
     requireImageMemory(scene,
                        (exr ? renderExrMemoryBytes(scene) : 0) +

@@ -9,6 +9,7 @@
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
@@ -94,7 +95,7 @@ void checkSceneCost(const Scene& scene, const ExploreLimits& limits) {
     checkAtMost("fractal.max_iterations", scene.fractal.maxIterations, limits.maxIterations,
                 "iterations");
     checkAtMost("render.max_steps", scene.render.maxSteps, limits.maxSteps, "steps");
-    Fractal::fromScene(scene);
+    fractalFromScene(scene);
 }
 
 void checkInteractiveImage(const Scene& scene, const ExploreLimits& limits) {

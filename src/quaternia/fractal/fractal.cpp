@@ -18,9 +18,9 @@ namespace {
 // set of the folded formula through that slice has the same membership and estimates, so the
 // quaternion paths (the SIMD lanes, the mesher) draw it. Nothing when the formula or the slice
 // does not have that form.
-std::optional<Fractal> octonionAsQuaternion(const Scene& scene,
+std::optional<Fractal> octonionAsQuaternion(const FractalSettings& fractal,
                                             const HypercomplexFractal& octonion) {
-    std::optional<OctonionFold> fold = foldOctonion(scene.fractal.formula, octonion);
+    std::optional<OctonionFold> fold = foldOctonion(fractal.formula, octonion);
     // The lanes' bounding sphere is the bailout's: only slices whose origin is orthogonal to
     // the axes (as the default slice's 0 is).
     if (!fold || fold->rows.size() > 4 || !fold->originOrthogonal) return std::nullopt;
@@ -30,28 +30,27 @@ std::optional<Fractal> octonionAsQuaternion(const Scene& scene,
             q[r] = fold->rows[r][c];
         return Quaternion(q[0], q[1], q[2], q[3]);
     };
-    return Fractal(
-        JuliaSet(std::move(fold->polynomial), scene.fractal.maxIterations, scene.fractal.bailout),
-        Slice::isometry(column(0), {column(1), column(2), column(3)}));
+    return Fractal(JuliaSet(std::move(fold->polynomial), fractal.maxIterations, fractal.bailout),
+                   Slice::isometry(column(0), {column(1), column(2), column(3)}));
 }
 
 }  // namespace
 
-Fractal Fractal::fromScene(const Scene& scene) {
-    if (scene.fractal.algebra != Algebra::kQuaternion) {
-        auto other = hypercomplexFractalFromScene(scene);  // checks everything first
-        if (scene.fractal.algebra == Algebra::kOctonion &&
-            scene.render.engine == RenderEngine::Simd)
-            if (auto same = octonionAsQuaternion(scene, *other)) return std::move(*same);
+Fractal Fractal::fromSettings(const FractalSettings& fractal, const SliceSettings& slice,
+                              OctonionFolding folding) {
+    if (fractal.algebra != Algebra::kQuaternion) {
+        auto other = hypercomplexFractalOf(fractal, slice);  // checks everything first
+        if (fractal.algebra == Algebra::kOctonion && folding == OctonionFolding::kWherePossible)
+            if (auto same = octonionAsQuaternion(fractal, *other)) return std::move(*same);
         return Fractal(std::move(other));
     }
-    Polynomial polynomial = compileFormula(scene.fractal.formula, scene.fractal.c);
+    Polynomial polynomial = compileFormula(fractal.formula, fractal.c);
     // The lanes' program from the formula as written (parsed again: it parsed above).
     auto program = std::make_shared<const FormulaProgram>(
-        FormulaProgram::compile(Formula::parse(scene.fractal.formula), scene.fractal.c));
-    return Fractal(JuliaSet(std::move(polynomial), scene.fractal.maxIterations,
-                            scene.fractal.bailout, std::move(program)),
-                   Slice(scene.slice));
+        FormulaProgram::compile(Formula::parse(fractal.formula), fractal.c));
+    return Fractal(
+        JuliaSet(std::move(polynomial), fractal.maxIterations, fractal.bailout, std::move(program)),
+        Slice(slice));
 }
 
 DistanceEstimate Fractal::estimate(const Point3d& p) const {

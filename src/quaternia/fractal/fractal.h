@@ -9,9 +9,9 @@
 
 #include "quaternia/algebra/vecmath.h"
 #include "quaternia/fractal/distance.h"
+#include "quaternia/fractal/fractal_settings.h"
 #include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/fractal/slice.h"
-#include "quaternia/scene/scene.h"
 
 namespace quaternia {
 
@@ -19,14 +19,19 @@ namespace quaternia {
 // critical point), the direction from the origin to p, outward for star-shaped sets.
 Vector3d normalOrOutward(const Vector3d& g, const Point3d& p);
 
+// Whether an octonion formula is drawn in the quaternions where its form allows (octonion_fold.h:
+// the SIMD lanes and the mesher then draw it), or always in the octonions (the scalar reference).
+enum class OctonionFolding { kWherePossible, kNever };
+
 class Fractal {
   public:
     Fractal(JuliaSet set, Slice slice) : set_(std::move(set)), slice_(slice) {}
     explicit Fractal(std::shared_ptr<const HypercomplexFractal> other)
         : hypercomplex_(std::move(other)) {}
     // Compiles fractal.formula with fractal.c in fractal.algebra; throws UserError naming the
-    // bad key.
-    static Fractal fromScene(const Scene& scene);
+    // bad key (scene/scene_fractal.h builds the fractal of a scene).
+    static Fractal fromSettings(const FractalSettings& fractal, const SliceSettings& slice,
+                                OctonionFolding folding);
 
     // Whether the set lives in an algebra other than the quaternions (then set() and slice()
     // must not be called: only the scalar reference paths, which use the members below, apply).

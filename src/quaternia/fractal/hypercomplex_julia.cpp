@@ -418,24 +418,24 @@ std::array<double, 3> HypercomplexJuliaSet::potentialGradient(
     return {dotProduct(z, t[0]), dotProduct(z, t[1]), dotProduct(z, t[2])};
 }
 
-std::shared_ptr<const HypercomplexFractal> hypercomplexFractalFromScene(const Scene& scene) {
-    const Algebra algebra = scene.fractal.algebra;
-    const Quaternion& c4 = scene.fractal.c;
+std::shared_ptr<const HypercomplexFractal> hypercomplexFractalOf(const FractalSettings& fractal,
+                                                                 const SliceSettings& slice) {
+    const Algebra algebra = fractal.algebra;
+    const Quaternion& c4 = fractal.c;
     Hypercomplex c{c4.w, c4.x, c4.y, c4.z, 0, 0, 0, 0};
     if (algebraDimension(algebra) == 8)
         for (size_t n = 0; n < 4; ++n)
-            c[4 + n] = scene.fractal.cUpper[n];
+            c[4 + n] = fractal.cUpper[n];
     HypercomplexFormula formula = [&] {
         try {
-            return HypercomplexFormula(Formula::parse(scene.fractal.formula), algebra, c);
+            return HypercomplexFormula(Formula::parse(fractal.formula), algebra, c);
         } catch (const FormulaError& e) {
             throw UserError("fractal.formula", std::string("fractal.formula: ") + e.what());
         }
     }();
-    HypercomplexJuliaSet set(std::move(formula), scene.fractal.maxIterations,
-                             scene.fractal.bailout);
+    HypercomplexJuliaSet set(std::move(formula), fractal.maxIterations, fractal.bailout);
     return std::make_shared<const HypercomplexFractal>(
-        HypercomplexFractal{std::move(set), HypercomplexSlice(scene.slice, algebra)});
+        HypercomplexFractal{std::move(set), HypercomplexSlice(slice, algebra)});
 }
 
 }  // namespace quaternia

@@ -27,7 +27,7 @@
 #include "quaternia/algebra/vecmath.h"
 #include "quaternia/fractal/distance.h"
 #include "quaternia/fractal/duplex_component.h"
-#include "quaternia/scene/scene.h"
+#include "quaternia/fractal/fractal_settings.h"
 
 namespace quaternia {
 
@@ -117,12 +117,14 @@ class HypercomplexJuliaSet {
     std::array<DuplexComponent, 2> components_;
 };
 
-// The set and slice of a scene whose fractal.algebra is not the quaternions.
+// The set and slice of a fractal whose algebra is not the quaternions.
 struct HypercomplexFractal {
     HypercomplexJuliaSet set;
     HypercomplexSlice slice;
 };
 
-std::shared_ptr<const HypercomplexFractal> hypercomplexFractalFromScene(const Scene& scene);
+// Throws UserError naming fractal.formula or slice.axes where they do not make one.
+std::shared_ptr<const HypercomplexFractal> hypercomplexFractalOf(const FractalSettings& fractal,
+                                                                 const SliceSettings& slice);
 
 }  // namespace quaternia

@@ -17,7 +17,7 @@
 
 #include "quaternia/algebra/quaternion.h"
 #include "quaternia/algebra/vecmath.h"
-#include "quaternia/scene/scene.h"
+#include "quaternia/fractal/fractal_settings.h"
 
 namespace quaternia {
 

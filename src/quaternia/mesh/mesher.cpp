@@ -11,6 +11,7 @@
 #include "quaternia/mesh/mesh_check.h"
 #include "quaternia/render/shade.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/memory_budget.h"
 #include "quaternia/util/parallel.h"
 
@@ -264,7 +265,7 @@ std::optional<uint64_t> meshMemoryOverBox(const Scene& scene, const Fractal& fra
 MeshResult meshScene(const Scene& scene, const MeshOptions& options) {
     auto start = std::chrono::steady_clock::now();
     validateScene(scene);
-    Fractal fractal = Fractal::fromScene(scene);
+    Fractal fractal = fractalFromScene(scene);
     MeshResult result;
     MeshStats& stats = result.stats;
     stats.threads = resolveThreadCount(options.threads);

@@ -13,6 +13,7 @@
 #include "quaternia/mesh/mesh_check.h"
 #include "quaternia/mesh/mesh_grid.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/scene/test_scenes.h"
 
 namespace quaternia {
@@ -106,7 +107,7 @@ TEST(Mesher, RealConstantGivesSolidOfRevolution) {
 TEST(Mesher, VerticesLieOnRenderedSurface) {
     Scene scene = testing::referenceScene("case01_sqr_A");
     MeshResult result = meshAt(scene, 96);
-    Fractal fractal = Fractal::fromScene(scene);
+    Fractal fractal = fractalFromScene(scene);
     double worst = 0;
     for (const Vector3f& v : result.mesh.positions)
         worst = std::max(worst, fractal.estimate(Point3d(v)).distance);
@@ -160,7 +161,7 @@ TEST(Mesher, BoxSearchStopsAtItsBudgetWithTheBoundingCube) {
     scene.fractal.cUpper = {1.141, 0.733, 1.095, -0.445};
     scene.fractal.cComponents = 8;
     scene.fractal.maxIterations = 8;
-    const Fractal fractal = Fractal::fromScene(scene);
+    const Fractal fractal = fractalFromScene(scene);
     int64_t estimates = 0;
     const auto box = boundingBoxOfSet(fractal, kBoundingBoxDivisions, estimates);
     ASSERT_TRUE(box);
@@ -169,7 +170,7 @@ TEST(Mesher, BoxSearchStopsAtItsBudgetWithTheBoundingCube) {
     EXPECT_NEAR(box->upper.z, r, 1e-12);
     EXPECT_LE(estimates, (int64_t(1) << 19) + 1);
     int64_t presetEstimates = 0;
-    boundingBoxOfSet(Fractal::fromScene(defaultScene()), kBoundingBoxDivisions, presetEstimates);
+    boundingBoxOfSet(fractalFromScene(defaultScene()), kBoundingBoxDivisions, presetEstimates);
     EXPECT_LT(presetEstimates, int64_t(1) << 17);
 }
 

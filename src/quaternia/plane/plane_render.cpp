@@ -13,7 +13,9 @@
 #include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/image/png_writer.h"
 #include "quaternia/render/render.h"
+#include "quaternia/render/sample_pattern.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
 #include "quaternia/util/parallel.h"
 

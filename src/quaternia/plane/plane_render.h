@@ -12,6 +12,7 @@
 #include "quaternia/image/image.h"
 #include "quaternia/image/plane_view.h"
 #include "quaternia/render/render.h"
+#include "quaternia/render/sample_pattern.h"
 #include "quaternia/scene/scene.h"
 
 namespace quaternia {

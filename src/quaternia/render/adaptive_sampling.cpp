@@ -1,4 +1,5 @@
 #include "quaternia/render/adaptive_sampling.h"
+#include "quaternia/render/sample_pattern.h"
 
 #include <algorithm>
 #include <cmath>

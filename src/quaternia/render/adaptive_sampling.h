@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "quaternia/image/image.h"
+#include "quaternia/render/sample_pattern.h"
 #include "quaternia/render/shade.h"
 #include "quaternia/util/parallel.h"
 

@@ -15,6 +15,7 @@
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 
 namespace quaternia {
 namespace {
@@ -38,17 +39,17 @@ const Quaternion kConstants[] = {Quaternion(-0.2, 0.7, 0.1, 0.05), Quaternion(-0
 using testing::randomPoints;
 
 TEST(BicomplexLanes, TakenOnlyWhereEveryEscapeIsACertainOne) {
-    const Fractal square = Fractal::fromScene(bicomplexScene("z^2 + c", kConstants[0]));
+    const Fractal square = fractalFromScene(bicomplexScene("z^2 + c", kConstants[0]));
     EXPECT_TRUE(LaneFractal::fromBicomplex(square, Precision::Single));
     // A bailout below the components' escape radii (about 1.5 here): |q| can escape while neither
     // component is sure to; the scalar reference's Lipschitz fallback is then needed.
     EXPECT_FALSE(LaneFractal::fromBicomplex(
-        Fractal::fromScene(bicomplexScene("z^2 + c", kConstants[0], 1.2)), Precision::Single));
+        fractalFromScene(bicomplexScene("z^2 + c", kConstants[0], 1.2)), Precision::Single));
     EXPECT_FALSE(LaneFractal::fromBicomplex(
-        Fractal::fromScene(bicomplexScene("sin(z) + c", kConstants[0])), Precision::Single));
+        fractalFromScene(bicomplexScene("sin(z) + c", kConstants[0])), Precision::Single));
     Scene coquaternion = bicomplexScene("z^2 + c", kConstants[0]);
     coquaternion.fractal.algebra = Algebra::kCoquaternion;
-    EXPECT_FALSE(LaneFractal::fromBicomplex(Fractal::fromScene(coquaternion), Precision::Single));
+    EXPECT_FALSE(LaneFractal::fromBicomplex(fractalFromScene(coquaternion), Precision::Single));
 }
 
 // The lanes of `fractal` in a precision.
@@ -172,7 +173,7 @@ int iterationsOf(const DistanceEstimate& e) {
 
 TEST(BicomplexLanes, EstimatesMatchTheScalarReference) {
     for (size_t f = 0; f < 2; ++f) {
-        const Fractal fractal = Fractal::fromScene(bicomplexScene(kFormulas[f], kConstants[f]));
+        const Fractal fractal = fractalFromScene(bicomplexScene(kFormulas[f], kConstants[f]));
         expectEstimatesMatch(
             fractal, [&](Precision p) { return *LaneFractal::fromBicomplex(fractal, p); },
             fractal.hypercomplex()->set.formula().degree(), escapeIterationOf, kFormulas[f],
@@ -182,7 +183,7 @@ TEST(BicomplexLanes, EstimatesMatchTheScalarReference) {
 
 TEST(BicomplexLanes, NormalsMatchTheScalarReference) {
     for (size_t f = 0; f < 2; ++f) {
-        const Fractal fractal = Fractal::fromScene(bicomplexScene(kFormulas[f], kConstants[f]));
+        const Fractal fractal = fractalFromScene(bicomplexScene(kFormulas[f], kConstants[f]));
         expectNormalsMatch(
             fractal, [&](Precision p) { return *LaneFractal::fromBicomplex(fractal, p); },
             kFormulas[f], unsigned(21 + f));
@@ -215,7 +216,7 @@ const char* const kOctonionFormulas[] = {"z^2 + c", "z^3 - 0.5*z + c", "z^2 + 0.
 
 TEST(OctonionLanes, TheFoldTakesRealFormsOnAnySlice) {
     const Scene scene = octonionScene("z^2 + c");
-    const Fractal fractal = Fractal::fromScene(scene);
+    const Fractal fractal = fractalFromScene(scene);
     ASSERT_FALSE(fractal.isQuaternion());  // no isometry: the fold is needed
     const std::optional<LaneFractal> lanes =
         LaneFractal::fromOctonion(scene, fractal, Precision::Single);
@@ -226,16 +227,16 @@ TEST(OctonionLanes, TheFoldTakesRealFormsOnAnySlice) {
     EXPECT_GT(lanes->boundingRadius, std::sqrt(lanes->bailoutSquared) + 0.1);
     Scene quaternionCoefficient = octonionScene("i*z^2 + c");
     EXPECT_FALSE(LaneFractal::fromOctonion(
-        quaternionCoefficient, Fractal::fromScene(quaternionCoefficient), Precision::Single));
+        quaternionCoefficient, fractalFromScene(quaternionCoefficient), Precision::Single));
     const Scene bicomplex = bicomplexScene("z^2 + c", kConstants[0]);
     EXPECT_FALSE(
-        LaneFractal::fromOctonion(bicomplex, Fractal::fromScene(bicomplex), Precision::Single));
+        LaneFractal::fromOctonion(bicomplex, fractalFromScene(bicomplex), Precision::Single));
 }
 
 TEST(OctonionLanes, EstimatesMatchTheOctonionArithmetic) {
     for (const char* formula : kOctonionFormulas) {
         const Scene scene = octonionScene(formula);
-        const Fractal fractal = Fractal::fromScene(scene);
+        const Fractal fractal = fractalFromScene(scene);
         expectEstimatesMatch(
             fractal, [&](Precision p) { return *LaneFractal::fromOctonion(scene, fractal, p); },
             fractal.hypercomplex()->set.formula().degree(), iterationsOf, formula, 31);
@@ -245,7 +246,7 @@ TEST(OctonionLanes, EstimatesMatchTheOctonionArithmetic) {
 TEST(OctonionLanes, NormalsMatchTheOctonionArithmetic) {
     for (const char* formula : kOctonionFormulas) {
         const Scene scene = octonionScene(formula);
-        const Fractal fractal = Fractal::fromScene(scene);
+        const Fractal fractal = fractalFromScene(scene);
         expectNormalsMatch(
             fractal, [&](Precision p) { return *LaneFractal::fromOctonion(scene, fractal, p); },
             formula, 41);

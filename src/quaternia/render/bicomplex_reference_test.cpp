@@ -14,6 +14,7 @@
 #include "quaternia/image/mask_test_helpers.h"
 #include "quaternia/image/png_io.h"
 #include "quaternia/render/render.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/scene/test_scenes.h"
 
 namespace quaternia {

@@ -4,6 +4,7 @@
 
 #include "quaternia/render/lane_tile_renderer.h"
 #include "quaternia/render/render.h"
+#include "quaternia/render/sample_pattern.h"
 
 namespace quaternia {
 

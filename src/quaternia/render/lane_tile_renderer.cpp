@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "quaternia/render/render.h"
+#include "quaternia/render/sample_pattern.h"
 
 namespace quaternia {
 

@@ -13,6 +13,7 @@
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/march.h"
 #include "quaternia/render/optics.h"
+#include "quaternia/render/sample_pattern.h"
 #include "quaternia/render/shade.h"
 #include "quaternia/util/parallel.h"
 

@@ -14,6 +14,7 @@
 #include "quaternia/image/mask_compare.h"
 #include "quaternia/image/mask_test_helpers.h"
 #include "quaternia/render/render.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/scene/test_scenes.h"
 
 namespace quaternia {
@@ -151,7 +152,7 @@ TEST(LaneRender, ShadowCylindersChangeNoPixel) {
     for (const char* id : {"case01_sqr_A", "case06_sqr_A_tilt"}) {
         Scene scene = testing::referenceScene(id);
         scene.shading.shadows = Shadows::Hard;
-        const Fractal fractal = Fractal::fromScene(scene);
+        const Fractal fractal = fractalFromScene(scene);
         const Camera camera(scene.camera, 320, 240);
         const Shader shader(scene.shading, fractal);
         const MarchSettings march{MarchMethod::SphereTracing, 0, scene.render.epsilon,
@@ -193,7 +194,7 @@ TEST(LaneRender, ShadowCylindersChangeNoPixel) {
 TEST(LaneRender, TileSizeChangesNoPixel) {
     Scene scene = testing::referenceScene("case01_sqr_A");
     scene.shading.shadows = Shadows::Hard;
-    const Fractal fractal = Fractal::fromScene(scene);
+    const Fractal fractal = fractalFromScene(scene);
     const int width = 200, height = 136;  // partial tiles of every size at the right and bottom
     const Camera camera(scene.camera, width, height);
     const Shader shader(scene.shading, fractal);

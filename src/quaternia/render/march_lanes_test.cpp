@@ -17,6 +17,7 @@
 #include "quaternia/render/lane_test_helpers.h"
 #include "quaternia/render/march.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/scene/test_scenes.h"
 
 namespace quaternia {
@@ -25,7 +26,7 @@ namespace {
 Fractal tiltedFractal() {
     Scene scene = testing::referenceScene("case06_sqr_A_tilt");
     scene.slice.anglesDegrees = {10, 0, 20, 0, 30, 0};  // and a 4D rotation on top of the tilt
-    return Fractal::fromScene(scene);
+    return fractalFromScene(scene);
 }
 
 using testing::randomPoints;
@@ -83,20 +84,20 @@ TEST(LaneFractal, ComplexConstantViewKeepsEveryOrbitRadius) {
 
 TEST(LaneFractal, PowerFormsTakeTheirLoopsAndEveryOtherFormulaItsProgram) {
     Scene scene = testing::referenceScene("case01_sqr_A");
-    EXPECT_FALSE(LaneFractal::from(Fractal::fromScene(scene), Precision::Single).program);
+    EXPECT_FALSE(LaneFractal::from(fractalFromScene(scene), Precision::Single).program);
     scene.fractal.formula = "z^3 + c";
-    const LaneFractal cubic = LaneFractal::from(Fractal::fromScene(scene), Precision::Single);
+    const LaneFractal cubic = LaneFractal::from(fractalFromScene(scene), Precision::Single);
     EXPECT_FALSE(cubic.program);
     EXPECT_EQ(cubic.degree, 3);
     scene.fractal.formula = "i*z*j*z + 0.5*z + c";
-    const LaneFractal general = LaneFractal::from(Fractal::fromScene(scene), Precision::Single);
+    const LaneFractal general = LaneFractal::from(fractalFromScene(scene), Precision::Single);
     ASSERT_TRUE(general.program);
     EXPECT_EQ(general.degree, 2);
     // P(r) = r^2 + 0.5 r: P'(r) = 2 r + 0.5.
     EXPECT_EQ(general.derivativeBound, (std::vector<double>{0.5, 2}));
     // Its program computes the polynomial.
     const Quaternion z(0.3, -0.2, 0.5, 0.1);
-    const Fractal fractal = Fractal::fromScene(scene);
+    const Fractal fractal = fractalFromScene(scene);
     EXPECT_LT(norm(general.program->evaluate(z) - fractal.set().polynomial().evaluate(z)), 1e-15);
 }
 
@@ -149,7 +150,7 @@ TEST(MarchLanes, DistancesAloneEqualTheFullEstimates) {
     Scene uncertified = certified;
     uncertified.fractal.bailout = 1.2;  // below the escape radius, about 1.47
     for (const Scene& scene : {certified, uncertified}) {
-        const Fractal fractal = Fractal::fromScene(scene);
+        const Fractal fractal = fractalFromScene(scene);
         const PointBatch points = randomPoints(2000, 1.6, 12);
         for (Precision precision : {Precision::Double, Precision::Single}) {
             const LaneFractal lanes = LaneFractal::from(fractal, precision);
@@ -171,8 +172,8 @@ TEST(MarchLanes, DistancesAloneEqualTheFullEstimates) {
 }
 
 TEST(MarchLanes, EstimatesMatchTheScalarReference) {
-    expectEstimatesMatch(Fractal::fromScene(testing::referenceScene("case01_sqr_A")), 2);
-    expectEstimatesMatch(Fractal::fromScene(testing::referenceScene("case08_cube_F")), 3);
+    expectEstimatesMatch(fractalFromScene(testing::referenceScene("case01_sqr_A")), 2);
+    expectEstimatesMatch(fractalFromScene(testing::referenceScene("case08_cube_F")), 3);
     expectEstimatesMatch(tiltedFractal(), 4);
 }
 
@@ -182,7 +183,7 @@ TEST(MarchLanes, EstimatesMatchTheScalarReference) {
 Fractal formulaFractal(const char* formula) {
     Scene scene = testing::referenceScene("case01_sqr_A");
     scene.fractal.formula = formula;
-    return Fractal::fromScene(scene);
+    return fractalFromScene(scene);
 }
 
 TEST(MarchLanes, ProgramEstimatesMatchTheScalarReference) {
@@ -235,7 +236,7 @@ TEST(MarchLanes, NormalsMatchTheAnalyticNormal) {
          {"case01_sqr_A", "case08_cube_F", "z^2 + 0.1*z + c", "(1+0.2i) z (1-0.1k) z + c"}) {
         const bool isFormula = std::string(id).find('z') != std::string::npos;
         Fractal fractal =
-            isFormula ? formulaFractal(id) : Fractal::fromScene(testing::referenceScene(id));
+            isFormula ? formulaFractal(id) : fractalFromScene(testing::referenceScene(id));
         PointBatch all = randomPoints(4000, 1.6, 5), nearSet;
         std::vector<int> iterations;
         for (size_t i = 0; i < all.size(); ++i) {
@@ -279,7 +280,7 @@ TEST(MarchLanes, NormalsAloneEqualTheNormalsOfTheEstimates) {
     uncertified.fractal.bailout = 1.2;  // below the escape radius, about 1.47
     const Scene cubic = testing::referenceScene("case08_cube_F");
     for (const Scene& scene : {certified, uncertified, cubic}) {
-        const Fractal fractal = Fractal::fromScene(scene);
+        const Fractal fractal = fractalFromScene(scene);
         // Points near the set, where renders take normals, and some inside and far out.
         PointBatch all = randomPoints(6000, 1.6, 21), points;
         for (size_t i = 0; i < all.size(); ++i) {
@@ -316,7 +317,7 @@ TEST(MarchLanes, NormalsAloneEqualTheNormalsOfTheEstimates) {
 // Camera rays in double lanes end as sphereTrace's do: the same kind of end at the same t.
 TEST(MarchLanes, CameraRaysEndWhereSphereTracingEnds) {
     Scene scene = testing::referenceScene("case01_sqr_A");
-    Fractal fractal = Fractal::fromScene(scene);
+    Fractal fractal = fractalFromScene(scene);
     Camera camera(scene.camera, 64, 48);
     MarchSettings settings{MarchMethod::SphereTracing, 0, scene.render.epsilon,
                            camera.pixelFootprint(1.0), scene.render.maxSteps};
@@ -356,7 +357,7 @@ TEST(MarchLanes, CameraRaysEndWhereSphereTracingEnds) {
 // Every instruction set compiled in and supported here (e.g. SSE4, AVX2, AVX-512, and the
 // portable fallback) computes the same estimates: the runtime dispatch cannot pick a broken one.
 TEST(MarchLanes, EveryCompiledTargetAgrees) {
-    Fractal fractal = Fractal::fromScene(testing::referenceScene("case01_sqr_A"));
+    Fractal fractal = fractalFromScene(testing::referenceScene("case01_sqr_A"));
     const LaneFractal lanes = LaneFractal::from(fractal, Precision::Double);
     PointBatch points = randomPoints(500, 1.6, 6);
     std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();

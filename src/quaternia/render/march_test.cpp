@@ -7,6 +7,7 @@
 #include <random>
 
 #include "quaternia/render/camera.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/scene/test_scenes.h"
 
 namespace quaternia {
@@ -30,7 +31,7 @@ TEST(IntersectSphere, FindsEntryAndExit) {
 // c = 0 is the unit ball: a ray from (0, 0, -3) towards the origin meets it at t = 2, where the
 // normal is the position itself.
 TEST(SphereTrace, HitsUnitBallAtTwoWithRadialNormal) {
-    Fractal fractal = Fractal::fromScene(unitBallScene(64, 64));
+    Fractal fractal = fractalFromScene(unitBallScene(64, 64));
     MarchSettings settings;
     settings.pixelAngle = 1e-3;
     settings.epsilon = 0.25;
@@ -87,7 +88,7 @@ TEST(RelaxedMarchStep, ApproachesAPlaneWithoutCrossingIt) {
 }
 
 TEST(FixedStepMarch, HitsUnitBallAtTwo) {
-    Fractal fractal = Fractal::fromScene(unitBallScene(64, 64));
+    Fractal fractal = fractalFromScene(unitBallScene(64, 64));
     MarchSettings settings;
     settings.method = MarchMethod::FixedStep;
     settings.step = 0.01;
@@ -105,7 +106,7 @@ TEST(SphereTrace, EstimateNeverOvershootsFirstMember) {
     for (const char* id : {"case01_sqr_A", "case06_sqr_A_tilt", "case08_cube_F"}) {
         Scene scene = referenceScene(id);
         scene.fractal.maxIterations = 200;
-        Fractal fractal = Fractal::fromScene(scene);
+        Fractal fractal = fractalFromScene(scene);
         Camera camera(scene.camera, 320, 240);
         MarchSettings brute;
         brute.method = MarchMethod::FixedStep;

@@ -16,27 +16,15 @@
 #include "quaternia/render/lane_tile_renderer.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/march.h"
+#include "quaternia/render/sample_pattern.h"
 #include "quaternia/render/shade.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
 #include "quaternia/util/parallel.h"
 
 namespace quaternia {
 namespace {
-
-// A small integer hash (Wang/Jenkins style) for reproducible jitter.
-uint32_t hashPixel(uint32_t a) {
-    a = (a ^ 61u) ^ (a >> 16);
-    a *= 9u;
-    a ^= a >> 4;
-    a *= 0x27d4eb2du;
-    a ^= a >> 15;
-    return a;
-}
-
-double unitFromHash(uint32_t h) {
-    return (h >> 8) * (1.0 / 16777216.0);
-}
 
 // Each thread's counters and scratch on their own cache lines, so that threads do not contend.
 struct alignas(64) ThreadTotals {
@@ -49,13 +37,13 @@ struct alignas(64) ThreadTotals {
     std::vector<PixelSamples> firstPass;
     std::vector<uint8_t> refine;
     std::vector<Rgba> firstDisplay;
-    std::vector<Rgba> row;  // a tile's row on its way to RenderResult::samples
+    std::vector<Rgba> row;  // a tile's row on its way to RenderResult::pngPixels
 };
 
 // Where render.alpha is "opaque" and the caller asked for samples: the rows go straight to PNG
-// samples (RenderOptions::opaqueSamples) instead of the float image.
+// samples (RenderOptions::opaquePngPixels) instead of the float image.
 bool rendersSamples(const RenderSettings& settings, const RenderOptions& options) {
-    return options.opaqueSamples && settings.alpha == AlphaMode::Opaque;
+    return options.opaquePngPixels && settings.alpha == AlphaMode::Opaque;
 }
 
 // The pixels to render: RenderOptions::window, checked, or the whole image.
@@ -75,8 +63,8 @@ RenderResult emptyResult(const RenderSettings& settings, const RenderOptions& op
     RenderResult result;
     const int width = window.x1 - window.x0, height = window.y1 - window.y0;
     if (rendersSamples(settings, options)) {
-        result.samplesFormat = {width, height, settings.bitDepth, PngColorType::Rgb};
-        result.samples.resize(pngRowBytes(result.samplesFormat) * size_t(height));
+        result.pngPixelsFormat = {width, height, settings.bitDepth, PngColorType::Rgb};
+        result.pngPixels.resize(pngRowBytes(result.pngPixelsFormat) * size_t(height));
     } else {
         result.image = Image(width, height);
     }
@@ -103,8 +91,8 @@ class RowTarget {
     RowTarget(RenderResult& result, bool toSamples, int x0, int y0)
         : result_(result), toSamples_(toSamples), x0_(x0), y0_(y0) {
         if (!toSamples) return;
-        sampleRowBytes_ = pngRowBytes(result.samplesFormat);
-        samplePixelBytes_ = sampleRowBytes_ / size_t(result.samplesFormat.width);
+        pngRowBytes_ = pngRowBytes(result.pngPixelsFormat);
+        pngPixelBytes_ = pngRowBytes_ / size_t(result.pngPixelsFormat.width);
     }
     Rgba* row(ThreadTotals& thread, const Tile& tile, int py) const {
         if (!toSamples_) return &result_.image.at(tile.x0 - x0_, py - y0_);
@@ -113,17 +101,17 @@ class RowTarget {
     }
     void done(const Tile& tile, int py, const Rgba* row) const {
         if (!toSamples_) return;
-        quantisePngSamples(&row->r, size_t(tile.x1 - tile.x0), result_.samplesFormat.bitDepth,
+        quantisePngSamples(&row->r, size_t(tile.x1 - tile.x0), result_.pngPixelsFormat.bitDepth,
                            false,
-                           result_.samples.data() + size_t(py - y0_) * sampleRowBytes_ +
-                               size_t(tile.x0 - x0_) * samplePixelBytes_);
+                           result_.pngPixels.data() + size_t(py - y0_) * pngRowBytes_ +
+                               size_t(tile.x0 - x0_) * pngPixelBytes_);
     }
 
   private:
     RenderResult& result_;
     bool toSamples_;
     int x0_, y0_;
-    size_t sampleRowBytes_ = 0, samplePixelBytes_ = 0;
+    size_t pngRowBytes_ = 0, pngPixelBytes_ = 0;
 };
 
 // The work of a lane tile, as render statistics (its hits are counted as its pixels finish).
@@ -194,7 +182,7 @@ class FrameRenderer {
 
 FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, const Tile& window,
                              RenderResult& result)
-    : fractal_(Fractal::fromScene(scene)),
+    : fractal_(fractalFromScene(scene)),
       camera_(scene.camera, scene.render.width, scene.render.height),
       shader_(scene.shading, fractal_, scene.lights),
       material_(scene.material),
@@ -479,25 +467,6 @@ struct RenderWorkspace::Threads {
 
 RenderWorkspace::RenderWorkspace() : threads_(std::make_unique<Threads>()) {}
 RenderWorkspace::~RenderWorkspace() = default;
-
-std::array<double, 2> samplePosition(int k, int n, int px, int py) {
-    if (n == 1) return {0.5, 0.5};
-    int columns = int(std::ceil(std::sqrt(double(n))));
-    int rows = (n + columns - 1) / columns;
-    uint32_t h =
-        hashPixel(uint32_t(px) * 73856093u ^ uint32_t(py) * 19349663u ^ uint32_t(k) * 83492791u);
-    double jx = unitFromHash(h), jy = unitFromHash(hashPixel(h));
-    return {(k % columns + jx) / columns, (k / columns + jy) / rows};
-}
-
-std::array<double, 2> lensSample(int k, int px, int py) {
-    // R2: k / plastic and k / plastic^2, plastic^3 = plastic + 1 (Roberts 2018).
-    constexpr double a1 = 0.7548776662466927, a2 = 0.5698402909980532;
-    const uint32_t h = hashPixel(uint32_t(px) * 2654435761u ^ uint32_t(py) * 40503u ^ 0x9e3779b9u);
-    const double ox = unitFromHash(h), oy = unitFromHash(hashPixel(h));
-    auto wrap = [](double v) { return v - std::floor(v); };
-    return {wrap(ox + a1 * k), wrap(oy + a2 * k)};
-}
 
 ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int height) {
     ParallelOptions parallel;

@@ -39,11 +39,11 @@ struct RenderOptions : WorkOptions {
     RenderWorkspace* workspace = nullptr;  // none: render() makes its scratch for the call
     bool depth = false;                    // also fill RenderResult::depth
     bool passes = false;                   // also fill RenderResult::passes (for EXR)
-    // Where render.alpha is "opaque": fill RenderResult::samples instead of the image, each
+    // Where render.alpha is "opaque": fill RenderResult::pngPixels instead of the image, each
     // row quantised as soon as its tile has it (while it is in cache), as encodePng would.
-    bool opaqueSamples = false;
+    bool opaquePngPixels = false;
     // Only this rectangle of the image (in the image's pixels; none: all of it). The result's
-    // image, samples and depth then hold the window alone, with the same values as the whole
+    // image, PNG pixels and depth then hold the window alone, with the same values as the whole
     // image's render has there, provided x0 and y0 are multiples of kWindowAlignment (the
     // tiles and cone blocks then fall on the same pixels). quaternia-mpi renders a poster
     // window by window on many machines.
@@ -110,12 +110,12 @@ struct RenderResult {
     // bounding sphere and 1 its far side; 1 where nothing was hit.
     GrayImage depth;
     RenderPasses passes;  // with RenderOptions::passes
-    // With RenderOptions::opaqueSamples and render.alpha = "opaque", in place of `image` (which
-    // stays empty): its RGB samples at the scene's bit depth, as PNG stores them (png_writer.h),
-    // the very samples that encodePng(image, bitDepth, true) writes. A quarter of the memory
+    // With RenderOptions::opaquePngPixels and render.alpha = "opaque", in place of `image` (which
+    // stays empty): its RGB pixels at the scene's bit depth, as PNG stores them (png_writer.h),
+    // the very bytes that encodePng(image, bitDepth, true) deflates. A quarter of the memory
     // of the float image at 8 bits, and no second pass over it.
-    PngFormat samplesFormat;
-    std::vector<uint8_t, ZeroedAllocator<uint8_t>> samples;
+    PngFormat pngPixelsFormat;
+    std::vector<uint8_t, ZeroedAllocator<uint8_t>> pngPixels;
     RenderStats stats;
     bool completed = true;  // false if cancelled
 };
@@ -135,14 +135,5 @@ RenderResult render(const Scene& scene, const RenderOptions& options = {});
 inline constexpr int64_t kMinimumLargeTiles = 128;
 inline constexpr int64_t kMinimumHugeTiles = 480;
 ParallelOptions imageParallelOptions(const WorkOptions& options, int width, int height);
-
-// Sample k of n within a pixel, in [0, 1)^2: a stratified grid jittered by a hash of the pixel,
-// so images are reproducible; the single sample is the pixel centre.
-std::array<double, 2> samplePosition(int k, int n, int px, int py);
-// The lens point (of the unit square, Camera::generateRay) of sample k of n of pixel (px, py)
-// for depth of field: a rank-1 lattice in k (the plastic number's R2 sequence, even over any
-// prefix of the samples) turned by an offset hashed from the pixel, so that neighbouring pixels
-// do not repeat the same lens points (which would show as a ghost image instead of blur).
-std::array<double, 2> lensSample(int k, int px, int py);
 
 }  // namespace quaternia

@@ -6,14 +6,14 @@
 namespace quaternia {
 
 RenderResult renderForPng(const Scene& scene, RenderOptions options) {
-    // Opaque frames come as PNG samples, quantised tile by tile (no float image at all).
-    options.opaqueSamples = true;
+    // Opaque frames come as PNG pixels, quantised tile by tile (no float image at all).
+    options.opaquePngPixels = true;
     return render(scene, options);
 }
 
 std::vector<uint8_t> encodeRenderPng(const RenderResult& result, int bitDepth) {
-    return result.samples.empty() ? encodePng(result.image, bitDepth)
-                                  : writePngBytes(result.samplesFormat, result.samples);
+    return result.pngPixels.empty() ? encodePng(result.image, bitDepth)
+                                    : writePngBytes(result.pngPixelsFormat, result.pngPixels);
 }
 
 PngRender renderPng(const Scene& scene, const RenderOptions& options) {
@@ -34,7 +34,7 @@ uint64_t renderPngMemoryBytes(const Scene& scene, bool depth) {
     uint64_t bytes;
     if (scene.render.alpha == AlphaMode::Opaque) {
         format.colorType = PngColorType::Rgb;
-        bytes = pngRowBytes(format) * uint64_t(format.height);  // RenderResult::samples
+        bytes = pngRowBytes(format) * uint64_t(format.height);  // RenderResult::pngPixels
     } else {
         bytes = pixels * sizeof(Rgba);  // RenderResult::image
     }

@@ -12,7 +12,7 @@
 
 namespace quaternia {
 
-// render() for a PNG: an opaque scene comes as PNG samples (RenderOptions::opaqueSamples), any
+// render() for a PNG: an opaque scene comes as PNG pixels (RenderOptions::opaquePngPixels), any
 // other as the float image. Throws UserError for a bad scene before any work.
 RenderResult renderForPng(const Scene& scene, RenderOptions options);
 
@@ -30,7 +30,7 @@ struct PngRender {
 PngRender renderPng(const Scene& scene, const RenderOptions& options);
 
 // An upper bound of the memory renderPng(scene) takes beyond a small fixed amount: the buffers
-// that grow with the image (the float image or the PNG samples, the depth pass, the encoded
+// that grow with the image (the float image or the PNG pixels, the depth pass, the encoded
 // files while they are assembled); per-thread scratch is a tile's and not counted.
 uint64_t renderPngMemoryBytes(const Scene& scene, bool depth);
 

@@ -13,6 +13,7 @@
 #include "quaternia/image/mask_compare.h"
 #include "quaternia/image/mask_test_helpers.h"
 #include "quaternia/image/png_io.h"
+#include "quaternia/render/sample_pattern.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/test_scenes.h"
 #include "quaternia/util/error.h"
@@ -60,7 +61,7 @@ TEST(Render, WindowHasTheWholeImagesPixels) {
             scene.render.alpha = samples ? AlphaMode::Opaque : AlphaMode::Coverage;
             RenderOptions options;
             options.depth = true;
-            options.opaqueSamples = samples;
+            options.opaquePngPixels = samples;
             const RenderResult whole = render(scene, options);
             options.window = Tile{64, 64, 150, 139};
             const RenderResult part = render(scene, options);
@@ -79,11 +80,12 @@ TEST(Render, WindowHasTheWholeImagesPixels) {
             }
             EXPECT_GT(hits, 0);  // the window shows some of the set
             if (!samples) continue;
-            const size_t row = pngRowBytes(whole.samplesFormat);
-            const size_t partRow = pngRowBytes(part.samplesFormat);
+            const size_t row = pngRowBytes(whole.pngPixelsFormat);
+            const size_t partRow = pngRowBytes(part.pngPixelsFormat);
             for (int y = 64; y < 139; ++y)
-                ASSERT_EQ(0, std::memcmp(part.samples.data() + size_t(y - 64) * partRow,
-                                         whole.samples.data() + size_t(y) * row + 64 * 3, partRow));
+                ASSERT_EQ(0,
+                          std::memcmp(part.pngPixels.data() + size_t(y - 64) * partRow,
+                                      whole.pngPixels.data() + size_t(y) * row + 64 * 3, partRow));
         }
     }
 }
@@ -295,7 +297,7 @@ TEST(Render, StatsDoNotDependOnTheThreads) {
     }
 }
 
-// Opaque frames rendered straight to PNG samples (RenderOptions::opaqueSamples) encode to the
+// Opaque frames rendered straight to PNG samples (RenderOptions::opaquePngPixels) encode to the
 // very bytes of the float image's PNG, on both engines, at both bit depths, with a background of
 // one colour and a gradient; frames with coverage alpha still come as the image.
 TEST(Render, OpaqueSamplesAreTheImagesPngSamples) {
@@ -304,7 +306,7 @@ TEST(Render, OpaqueSamplesAreTheImagesPngSamples) {
     scene.render.height = 45;
     scene.render.alpha = AlphaMode::Opaque;
     RenderOptions asSamples;
-    asSamples.opaqueSamples = true;
+    asSamples.opaquePngPixels = true;
     for (RenderEngine engine : {RenderEngine::Simd, RenderEngine::Scalar}) {
         for (int bitDepth : {8, 16}) {
             for (bool uniform : {true, false}) {
@@ -315,8 +317,8 @@ TEST(Render, OpaqueSamplesAreTheImagesPngSamples) {
                 const RenderResult image = render(scene, RenderOptions{});
                 const RenderResult samples = render(scene, asSamples);
                 EXPECT_EQ(samples.image.width(), 0);
-                ASSERT_EQ(samples.samplesFormat.colorType, PngColorType::Rgb);
-                EXPECT_EQ(writePngBytes(samples.samplesFormat, samples.samples),
+                ASSERT_EQ(samples.pngPixelsFormat.colorType, PngColorType::Rgb);
+                EXPECT_EQ(writePngBytes(samples.pngPixelsFormat, samples.pngPixels),
                           encodePng(image.image, bitDepth, true))
                     << bitDepth << " bits, uniform background " << uniform;
             }
@@ -324,7 +326,7 @@ TEST(Render, OpaqueSamplesAreTheImagesPngSamples) {
     }
     scene.render.alpha = AlphaMode::Coverage;
     const RenderResult coverage = render(scene, asSamples);
-    EXPECT_TRUE(coverage.samples.empty());
+    EXPECT_TRUE(coverage.pngPixels.empty());
     EXPECT_EQ(coverage.image.width(), scene.render.width);
 }
 

@@ -13,6 +13,7 @@
 #include "quaternia/render/optics.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/scene/test_scenes.h"
 
 namespace quaternia {
@@ -272,7 +273,7 @@ TEST(Ground, CameraRaysThatEndOnItChangeNoPixel) {
         scene.lights[0].color = Color(1, 0.9, 0.8);
         scene.lights[0].intensity = 8;
         scene.lights[0].radius = 0.3;
-        const Fractal fractal = Fractal::fromScene(scene);
+        const Fractal fractal = fractalFromScene(scene);
         const Camera camera(scene.camera, 160, 90);
         const Shader shader(scene.shading, fractal, scene.lights);
         const MarchSettings march{MarchMethod::SphereTracing, 0, scene.render.epsilon,

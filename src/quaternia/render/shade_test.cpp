@@ -7,6 +7,7 @@
 
 #include "quaternia/render/camera.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/scene/test_scenes.h"
 
 namespace quaternia {
@@ -14,7 +15,7 @@ namespace {
 
 struct UnitBall {
     Scene scene = testing::unitBallScene(16, 16);
-    Fractal fractal = Fractal::fromScene(scene);
+    Fractal fractal = fractalFromScene(scene);
 };
 
 TEST(Shader, BackgroundIsVerticalGradient) {
@@ -82,7 +83,7 @@ TEST(Shader, ShadowOfTheUnitBall) {
     // sphere is larger than the ball (K_30 is the unit ball to within 1e-9), so the shadow ray
     // is marched.
     ball.scene.fractal.bailout = 2;
-    ball.fractal = Fractal::fromScene(ball.scene);
+    ball.fractal = fractalFromScene(ball.scene);
     ball.scene.shading.shadows = Shadows::Soft;
     Shader soft(ball.scene.shading, ball.fractal);
     ShadingStats stats;

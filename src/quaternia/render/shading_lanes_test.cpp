@@ -14,6 +14,7 @@
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/render/shade.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 
 namespace quaternia {
 namespace {
@@ -53,7 +54,7 @@ TEST(ShadingLanes, DisplayEncodingKeepsAlphaOnEveryTarget) {
 TEST(ShadingLanes, LightingMatchesTheShaderOnEveryTarget) {
     Scene scene = defaultScene();
     scene.shading.shininess = 20;
-    const Fractal fractal = Fractal::fromScene(scene);
+    const Fractal fractal = fractalFromScene(scene);
     const Shader shader(scene.shading, fractal);
     std::mt19937 random(5);
     std::normal_distribution<double> gaussian;

@@ -7,6 +7,7 @@
 #include "quaternia/render/camera.h"
 #include "quaternia/render/march.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/scene/test_scenes.h"
 
 namespace quaternia {
@@ -15,7 +16,7 @@ namespace {
 // The analytic normal (one pass through the Jacobians, tilt and rotation included) agrees with
 // central differences of the potential at surface points found by sphere tracing.
 void expectNormalsAgree(const Scene& scene, double minimumCosine) {
-    Fractal fractal = Fractal::fromScene(scene);
+    Fractal fractal = fractalFromScene(scene);
     Camera camera(scene.camera, 160, 120);
     MarchSettings settings;
     settings.pixelAngle = camera.pixelFootprint(1);

@@ -19,6 +19,7 @@
 
 #include "quaternia/algebra/vecmath.h"
 #include "quaternia/fractal/fractal.h"
+#include "quaternia/scene/scene.h"
 
 namespace quaternia {
 

@@ -1,7 +1,6 @@
-// Numbers as `quaternia orbit` and `quaternia cycles` read and write them: a constant such as
+// Constants as `quaternia orbit` and `quaternia cycles` read and write them: a constant such as
 // --c or --z0 read by the formula parser, and complex numbers and quaternions written in the same
-// a+bi+cj+dk form that it reads back. Apart from dynamics_input.h so that it links alone (the
-// fuzz target fuzz/numbers_fuzzer.cpp).
+// a+bi+cj+dk form that it reads back (the fuzz target fuzz/numbers_fuzzer.cpp checks both ways).
 #pragma once
 
 #include <complex>
@@ -16,11 +15,13 @@ namespace quaternia {
 // `option` (e.g. "--c") otherwise.
 Quaternion parseConstant(const std::string& text, const std::string& option);
 
-// 10 significant digits; components below 1e-12 of max(1, the largest component) (rounding
-// residue, as in 1e-17 + 0.62i) and negative zeros print as 0: "-1+i", "-i", "0.25",
+// The significant digits of a reported number (util/number_format.h, roundedNumber).
+inline constexpr int kReportDigits = 10;
+
+// kReportDigits significant digits; components below 1e-12 of max(1, the largest component)
+// (rounding residue, as in 1e-17 + 0.62i) and negative zeros print as 0: "-1+i", "-i", "0.25",
 // "1+2i-0.5j+k".
 std::string formatComplex(std::complex<double> z);
 std::string formatQuaternion(const Quaternion& q);
-std::string formatReal(double value);
 
 }  // namespace quaternia

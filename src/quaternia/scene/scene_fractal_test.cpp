@@ -1,4 +1,6 @@
-#include "quaternia/fractal/hypercomplex_julia.h"
+// Fractals built from scenes (scene_fractal.h) in every algebra: the quaternion fold of
+// octonions, the bicomplex duplex form, the Lipschitz paths of coquaternions and biquaternions.
+#include "quaternia/scene/scene_fractal.h"
 
 #include <gtest/gtest.h>
 
@@ -7,6 +9,7 @@
 #include <random>
 
 #include "quaternia/fractal/fractal.h"
+#include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/util/error.h"
 
@@ -41,8 +44,8 @@ TEST(HypercomplexJulia, OctonionsInTheQuaternionSubalgebraDrawTheQuaternionSet) 
     // 0 .. 3: every orbit stays in the quaternions, so membership and estimate are the
     // quaternion ones, escape radius included.
     const Hypercomplex c{-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0};
-    const Fractal quaternion = Fractal::fromScene(sceneIn(Algebra::kQuaternion, c));
-    const Fractal octonion = Fractal::fromScene(sceneIn(Algebra::kOctonion, c));
+    const Fractal quaternion = fractalFromScene(sceneIn(Algebra::kQuaternion, c));
+    const Fractal octonion = fractalFromScene(sceneIn(Algebra::kOctonion, c));
     EXPECT_NEAR(octonion.escapeRadius(), quaternion.escapeRadius(), 1e-12);
     EXPECT_EQ(octonion.distanceKind(), DistanceKind::kEstimate);
     std::mt19937 rng(21);
@@ -70,9 +73,9 @@ TEST(HypercomplexJulia, OctonionRealFormsRunAsQuaternionsThroughAnIsometry) {
     for (const char* formula : {"z^2 + c", "z^3 - 0.5*z + c", "z^2 + (z - 1)*0.1 + i*c"}) {
         scene.fractal.formula = formula;
         scene.render.engine = RenderEngine::Simd;
-        const Fractal fast = Fractal::fromScene(scene);
+        const Fractal fast = fractalFromScene(scene);
         scene.render.engine = RenderEngine::Scalar;
-        const Fractal reference = Fractal::fromScene(scene);
+        const Fractal reference = fractalFromScene(scene);
         EXPECT_TRUE(fast.isQuaternion()) << formula;
         EXPECT_FALSE(reference.isQuaternion());
         EXPECT_NEAR(fast.escapeRadius(), reference.escapeRadius(), 1e-9) << formula;
@@ -94,11 +97,11 @@ TEST(HypercomplexJulia, OctonionRealFormsRunAsQuaternionsThroughAnIsometry) {
     scene.slice.axes = {0, 0, 1, 0, 0, 0, 0, 0,  //
                         0, 0, 0, 1, 0, 0, 0, 0,  //
                         0, 0, 0, 0, 0, 0, 1, 0};
-    EXPECT_FALSE(Fractal::fromScene(scene).isQuaternion());
+    EXPECT_FALSE(fractalFromScene(scene).isQuaternion());
     // Neither for a formula with a quaternion coefficient.
     scene.slice.axes.clear();
     scene.fractal.formula = "i*z^2 + c";
-    EXPECT_FALSE(Fractal::fromScene(scene).isQuaternion());
+    EXPECT_FALSE(fractalFromScene(scene).isQuaternion());
 }
 
 TEST(HypercomplexJulia, NegatingTheOctonionBHalfIsAnAutomorphism) {
@@ -117,7 +120,7 @@ TEST(HypercomplexJulia, NegatingTheOctonionBHalfIsAnAutomorphism) {
     for (size_t a = 0; a < 3; ++a)
         for (size_t n = 4; n < 8; ++n)
             negated.slice.axes[8 * a + n] = -negated.slice.axes[8 * a + n];
-    const Fractal first = Fractal::fromScene(scene), second = Fractal::fromScene(negated);
+    const Fractal first = fractalFromScene(scene), second = fractalFromScene(negated);
     std::mt19937 rng(22);
     int inside = 0;
     for (int trial = 0; trial < 2000; ++trial) {
@@ -131,7 +134,7 @@ TEST(HypercomplexJulia, NegatingTheOctonionBHalfIsAnAutomorphism) {
     // And the b-half matters: the same scene with c's b-half dropped is another set.
     Scene dropped = scene;
     dropped.fractal.cUpper = {0, 0, 0, 0};
-    const Fractal third = Fractal::fromScene(dropped);
+    const Fractal third = fractalFromScene(dropped);
     int differ = 0;
     for (int trial = 0; trial < 2000; ++trial) {
         const Point3d p = randomPoint(rng, 1.5);
@@ -200,7 +203,7 @@ TEST(HypercomplexJulia, BicomplexDistanceComesFromTheComplexEstimates) {
 TEST(HypercomplexJulia, CoquaternionsOnSpanOneIAreTheComplexJuliaSet) {
     // i^2 = -1: on span{1, i} (the slice's plane z = 0) z^2 + c is the complex map.
     const Hypercomplex c{-0.4, 0.55, 0, 0, 0, 0, 0, 0};
-    const Fractal fractal = Fractal::fromScene(sceneIn(Algebra::kCoquaternion, c, 40));
+    const Fractal fractal = fractalFromScene(sceneIn(Algebra::kCoquaternion, c, 40));
     EXPECT_EQ(fractal.distanceKind(), DistanceKind::kLipschitz);
     std::mt19937 rng(24);
     std::uniform_real_distribution<double> u(-1.6, 1.6);
@@ -229,7 +232,7 @@ TEST(HypercomplexJulia, CoquaternionsOnSpanOneJAreProductsOfIntervals) {
     // intervals lie inside the bailout (|q|^2 = (u^2 + v^2) / 2 <= 4), so K is their product.
     const double c0 = -0.5, c2 = 0.2;
     const Fractal fractal =
-        Fractal::fromScene(sceneIn(Algebra::kCoquaternion, {c0, 0, c2, 0, 0, 0, 0, 0}, 400));
+        fractalFromScene(sceneIn(Algebra::kCoquaternion, {c0, 0, c2, 0, 0, 0, 0, 0}, 400));
     const double betaU = (1 + std::sqrt(1 - 4 * (c0 + c2))) / 2;
     const double betaV = (1 + std::sqrt(1 - 4 * (c0 - c2))) / 2;
     std::mt19937 rng(25);
@@ -252,8 +255,8 @@ TEST(HypercomplexJulia, CoquaternionsOnSpanOneJAreProductsOfIntervals) {
 TEST(HypercomplexJulia, BiquaternionsWithoutAnHPartAreTheQuaternionSet) {
     // b = 0 throughout: (a + 0h)(c + 0h) = ac, the quaternion product, at the same bailout.
     const Hypercomplex c{-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0};
-    const Fractal quaternion = Fractal::fromScene(sceneIn(Algebra::kQuaternion, c, 12, 2));
-    const Fractal biquaternion = Fractal::fromScene(sceneIn(Algebra::kBiquaternion, c, 12, 0));
+    const Fractal quaternion = fractalFromScene(sceneIn(Algebra::kQuaternion, c, 12, 2));
+    const Fractal biquaternion = fractalFromScene(sceneIn(Algebra::kBiquaternion, c, 12, 0));
     EXPECT_EQ(biquaternion.boundingRadius(), 2);  // the default bailout of the biquaternions
     std::mt19937 rng(26);
     int inside = 0;
@@ -270,7 +273,7 @@ TEST(HypercomplexJulia, LipschitzDistanceKeepsTheBallOutsideTheSet) {
     for (Algebra algebra : {Algebra::kCoquaternion, Algebra::kBiquaternion}) {
         Scene scene = sceneIn(algebra, {-0.3, 0.5, 0.2, -0.1, 0.1, 0, 0.1, 0});
         scene.fractal.formula = "z^2 + (0.2+0.1j)*z*i + c";
-        const Fractal fractal = Fractal::fromScene(scene);
+        const Fractal fractal = fractalFromScene(scene);
         std::mt19937 rng(27);
         std::uniform_real_distribution<double> unit(-1, 1);
         int positive = 0;
@@ -297,7 +300,7 @@ TEST(HypercomplexJulia, DegenerateAxesAreRejected) {
                         0, 1,  0, 0, 0, 0, 0, 0,  //
                         2, -3, 0, 0, 0, 0, 0, 0};
     try {
-        Fractal::fromScene(scene);
+        fractalFromScene(scene);
         ADD_FAILURE() << "no error";
     } catch (const UserError& error) {
         EXPECT_EQ(error.key(), "slice.axes");

@@ -1,12 +1,11 @@
-#include "cmd/number_text.h"
+#include "quaternia/algebra/constant_text.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "quaternia/algebra/formula.h"
 #include "quaternia/util/error.h"
+#include "quaternia/util/number_format.h"
 
 namespace quaternia {
 namespace {
@@ -35,21 +34,10 @@ Quaternion parseConstant(const std::string& text, const std::string& option) {
     return value;
 }
 
-std::string formatReal(double value) {
-    if (value == 0) value = 0;  // no "-0"
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", value);
-    // Within 10 digits of the largest double the rounded text lies beyond it and would not read
-    // back (--c refuses it as out of range): all 17 digits there.
-    if (std::isinf(std::strtod(buffer, nullptr)))
-        std::snprintf(buffer, sizeof buffer, "%.17g", value);
-    return buffer;
-}
-
 std::string formatQuaternion(const Quaternion& q) {
     Quaternion c = chopped(q);
     std::string text;
-    if (c.w != 0) text = formatReal(c.w);
+    if (c.w != 0) text = roundedNumber(c.w, kReportDigits);
     const char* units[] = {"i", "j", "k"};
     for (int k = 1; k < 4; ++k) {
         double v = c[k];
@@ -58,7 +46,7 @@ std::string formatQuaternion(const Quaternion& q) {
             text += v < 0 ? "-" : "+";
         else if (v < 0)
             text += "-";
-        std::string magnitude = formatReal(std::abs(v));
+        std::string magnitude = roundedNumber(std::abs(v), kReportDigits);
         if (magnitude != "1") text += magnitude;
         text += units[k - 1];
     }
