@@ -7,7 +7,26 @@
 #include "quaternia/render/lanes/shading_lanes.h"
 
 namespace quaternia {
+
+#include "quaternia/render/lanes/lighting-inl.h"  // the lighting formulas, shared with the lanes
+
 namespace {
+
+// lighting-inl.h's arithmetic in double.
+struct ScalarLightMath {
+    double shininess, highlightCutoff;
+    static double set(double x) { return x; }
+    static double mulAdd(double a, double b, double c) { return a * b + c; }
+    static double max(double a, double b) { return std::max(a, b); }
+    static double sqrt(double a) { return std::sqrt(a); }
+    double highlight(double gate, double cosine) const {
+        return gate > 0 && cosine > highlightCutoff ? std::pow(cosine, shininess) : 0;
+    }
+};
+
+LightVector<double> lightVector(const Vector3d& v) {
+    return {v.x, v.y, v.z};
+}
 
 double clamp01(double v) {
     return std::clamp(v, 0.0, 1.0);
@@ -294,31 +313,22 @@ Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingSta
 
 Color Shader::lightOther(const LightSource& light, const KeyLight& at, const Vector3d& normal,
                          const Color& albedo, const Vector3d& view, double visibility) const {
-    const double diffuse = keyDiffuse(normal, at);
-    if (!(diffuse > 0) || !(visibility > 0)) return Color();
-    const double cosine = dot(normal, normalize(at.toLight - view));
-    const double highlight = cosine > highlightCutoff_ ? std::pow(cosine, settings_.shininess) : 0;
-    return light.color * (at.scale * visibility) *
-           (albedo * diffuse + Color(1, 1, 1) * (settings_.specular * highlight));
+    if (!(keyDiffuse(normal, at) > 0) || !(visibility > 0)) return Color();
+    const LightVector<double> lit =
+        litByOther(ScalarLightMath{settings_.shininess, highlightCutoff_}, lightVector(normal),
+                   lightVector(at.toLight), lightVector(view), at.scale, visibility,
+                   lightVector(albedo), lightVector(light.color), settings_.specular);
+    return {lit.x, lit.y, lit.z};
 }
 
 Color Shader::light(const SurfaceSample& sample, const Ray& ray) const {
-    const Vector3d& n = sample.normal;
-    const double key = std::max(0.0, dot(n, sample.toLight)) * sample.keyScale;
-    Vector3d halfway = normalize(sample.toLight - ray.direction);
-    const double cosine = dot(n, halfway);
-    double highlight = key > 0 && cosine > highlightCutoff_
-                           ? std::pow(float(cosine), float(settings_.shininess))
-                           : 0;
-    double fillDiffuse = std::max(0.0, dot(n, fillDirection_));
-
-    const Color& base = sample.albedo;
-    Color color = base * settings_.lightColor * (key * sample.visibility);
-    color += settings_.lightColor *
-             (settings_.specular * highlight * sample.keyScale * sample.visibility);
-    color += base * settings_.fillColor * (fillDiffuse * sample.occlusion);
-    color += base * (settings_.ambient * sample.occlusion);
-    return color;
+    const LightVector<double> lit =
+        litByKey(ScalarLightMath{settings_.shininess, highlightCutoff_}, lightVector(sample.normal),
+                 lightVector(sample.toLight), lightVector(ray.direction), sample.keyScale,
+                 sample.visibility, sample.occlusion, lightVector(sample.albedo),
+                 lightVector(fillDirection_), lightVector(settings_.lightColor),
+                 lightVector(settings_.fillColor), settings_.specular, settings_.ambient);
+    return {lit.x, lit.y, lit.z};
 }
 
 LightConstants Shader::lightConstants() const {

@@ -19,6 +19,8 @@ namespace quaternia {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+#include "quaternia/render/lanes/lighting-inl.h"  // the lighting formulas, shared with shade.cpp
+
 void EncodeDisplay(float* values, size_t pixels, float exposure, float inverseGamma) {
     const hn::ScalableTag<float> d;
     const size_t lanes = hn::Lanes(d);
@@ -46,41 +48,47 @@ void EncodeDisplay(float* values, size_t pixels, float exposure, float inverseGa
         std::copy(tail, tail + 4 * (pixels - i), values + 4 * i);
     }
 }
+// lighting-inl.h's arithmetic in float lanes.
+template <class D>
+struct LaneLightMath {
+    using V = hn::Vec<D>;
+    D d;
+    V shininess, cutoff, tiny;
+    V set(double x) const { return hn::Set(d, float(x)); }
+    static V mulAdd(V a, V b, V c) { return hn::MulAdd(a, b, c); }
+    static V max(V a, V b) { return hn::Max(a, b); }
+    static V sqrt(V a) { return hn::Sqrt(a); }
+    V highlight(V gate, V cosine) const {
+        const auto shines = hn::And(gate > hn::Zero(d), cosine > cutoff);
+        return hn::IfThenElseZero(shines,
+                                  hn::Exp(d, shininess * hn::Log(d, hn::Max(cosine, tiny))));
+    }
+};
+
 void LightSurfaceLanes(const LightConstants& k, SurfaceBatch& surfaces) {
     const hn::ScalableTag<float> d;
     using V = hn::Vec<decltype(d)>;
     const size_t lanes = hn::Lanes(d);
     auto set = [&](float v) { return hn::Set(d, v); };
-    const V zero = hn::Zero(d), tiny = set(1e-30f);
+    const LaneLightMath<decltype(d)> math{d, set(k.shininess), set(k.highlightCutoff), set(1e-30f)};
+    auto constant = [&](const float* v) { return LightVector<V>{set(v[0]), set(v[1]), set(v[2])}; };
+    const LightVector<V> fill = constant(k.fill), lightColor = constant(k.lightColor),
+                         fillColor = constant(k.fillColor);
     auto light = [&](size_t i, auto load, auto store) {
-        const V nx = load(surfaces.nx, i), ny = load(surfaces.ny, i), nz = load(surfaces.nz, i);
-        const V lx = load(surfaces.lx, i), ly = load(surfaces.ly, i), lz = load(surfaces.lz, i);
-        const V keyScale = load(surfaces.keyScale, i);
-        const V key = hn::Max(zero, hn::MulAdd(nz, lz, hn::MulAdd(ny, ly, nx * lx))) * keyScale;
-        const V fill = hn::Max(
-            zero,
-            hn::MulAdd(nz, set(k.fill[2]), hn::MulAdd(ny, set(k.fill[1]), nx * set(k.fill[0]))));
-        // The highlight: cos^shininess of the angle between the normal and the halfway vector.
-        const V hx = lx - load(surfaces.dx, i), hy = ly - load(surfaces.dy, i),
-                hz = lz - load(surfaces.dz, i);
-        const V cosine = hn::MulAdd(nz, hz, hn::MulAdd(ny, hy, nx * hx)) /
-                         hn::Sqrt(hn::MulAdd(hz, hz, hn::MulAdd(hy, hy, hx * hx)));
-        const auto shines = hn::And(key > zero, cosine > set(k.highlightCutoff));
-        const V highlight = hn::IfThenElseZero(
-            shines, hn::Exp(d, set(k.shininess) * hn::Log(d, hn::Max(cosine, tiny))));
-        const V visibility = load(surfaces.visibility, i), occlusion = load(surfaces.occlusion, i);
-        const V direct = key * visibility;
-        const V shine = set(k.specular) * highlight * keyScale * visibility;
-        const V fillLevel = fill * occlusion, ambientLevel = set(k.ambient) * occlusion;
-        auto channel = [&](const std::vector<float>& albedo, int c) {
-            const V base = load(albedo, i);
-            const V lit = hn::MulAdd(direct, set(k.lightColor[c]),
-                                     hn::MulAdd(fillLevel, set(k.fillColor[c]), ambientLevel));
-            return hn::MulAdd(base, lit, shine * set(k.lightColor[c]));
+        auto vector = [&](const std::vector<float>& x, const std::vector<float>& y,
+                          const std::vector<float>& z) {
+            return LightVector<V>{load(x, i), load(y, i), load(z, i)};
         };
-        store(channel(surfaces.albedoR, 0), surfaces.red, i);
-        store(channel(surfaces.albedoG, 1), surfaces.green, i);
-        store(channel(surfaces.albedoB, 2), surfaces.blue, i);
+        const LightVector<V> lit =
+            litByKey(math, vector(surfaces.nx, surfaces.ny, surfaces.nz),
+                     vector(surfaces.lx, surfaces.ly, surfaces.lz),
+                     vector(surfaces.dx, surfaces.dy, surfaces.dz), load(surfaces.keyScale, i),
+                     load(surfaces.visibility, i), load(surfaces.occlusion, i),
+                     vector(surfaces.albedoR, surfaces.albedoG, surfaces.albedoB), fill, lightColor,
+                     fillColor, set(k.specular), set(k.ambient));
+        store(lit.x, surfaces.red, i);
+        store(lit.y, surfaces.green, i);
+        store(lit.z, surfaces.blue, i);
     };
     const size_t count = surfaces.size();
     size_t i = 0;
