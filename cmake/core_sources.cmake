@@ -32,6 +32,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/render/render_png.cpp
   quaternia/render/render_exr.cpp
   quaternia/render/adaptive_sampling.cpp
+  quaternia/render/adaptive_driver.cpp
   quaternia/render/lane_tile_adaptive.cpp
   quaternia/render/lane_tile_scenery.cpp
   quaternia/render/lane_tile_ground.cpp

@@ -1,4 +1,4 @@
-// The SIMD path's adaptive sampling (adaptive_sampling.h): LaneTileRenderer::renderAdaptive.
+// The SIMD path's adaptive sampling: LaneTileRenderer as the tracer of adaptive_driver.h.
 #include <algorithm>
 #include <limits>
 
@@ -18,8 +18,15 @@ constexpr size_t kRefinementBatch = 4096;
 
 void LaneTileRenderer::renderAdaptive(const Tile& tile, std::vector<PixelSamples>& pixels,
                                       LaneTileStats& stats) {
+    adaptiveStats_ = &stats;
+    renderAdaptively(tile, camera_->width(), camera_->height(), samples_, *shader_, *this,
+                     adaptiveScratch_, pixels);
+    adaptiveStats_ = nullptr;
+}
+
+void LaneTileRenderer::traceFirstSamples(const Tile& tile, std::span<const SampleRequest> requests,
+                                         std::vector<PixelSamples>& firstPass) {
     const int imageWidth = camera_->width(), imageHeight = camera_->height();
-    const Tile region = refinementRegion(tile, imageWidth, imageHeight);
     // The cone blocks of the region: the tile's and the ring about it, on the image's grid of
     // kConeBlock pixels (the tile's corner is on it), so that each border pixel starts from
     // the cone of the block it has in its own tile.
@@ -28,54 +35,40 @@ void LaneTileRenderer::renderAdaptive(const Tile& tile, std::vector<PixelSamples
                       std::min(imageHeight, (tile.y1 + kConeBlock) / kConeBlock * kConeBlock)};
     const int blocksAcross = (blocks.x1 - blocks.x0 + kConeBlock - 1) / kConeBlock;
     tileBlocks_ = blocksAcross * ((blocks.y1 - blocks.y0 + kConeBlock - 1) / kConeBlock);
+    adaptiveBlocks_ = blocks;
+    LaneTileStats& stats = *adaptiveStats_;
     marchCones(blocks, stats);
 
-    // The first samples. Without shadow cylinders: a cylinder holds the rays of its block in
-    // the batch, which for a border pixel are not those of its own tile, and a cylinder may
-    // change a pixel by a rounding (ShadowCylindersChangeNoPixel); the decisions must not.
-    const AdaptiveSampling order(samples_);
-    const int regionWidth = region.x1 - region.x0;
-    constexpr int first = AdaptiveSampling::kFirst;
-    firstPass_.assign(size_t(regionWidth) * size_t(region.y1 - region.y0),
-                      PixelSamples{.samples = first});
-    stats.rays += int64_t(first) * int64_t(firstPass_.size());
+    // In one batch, without shadow cylinders: a cylinder holds the rays of its block in the
+    // batch, which for a border pixel are not those of its own tile, and a cylinder may change a
+    // pixel by a rounding (ShadowCylindersChangeNoPixel); the decisions must not.
+    stats.rays += int64_t(requests.size());
     const bool cylinders = shadowCylinders_;
     shadowCylinders_ = false;
     clearRays();
-    for (int py = region.y0; py < region.y1; ++py) {
-        for (int px = region.x0; px < region.x1; ++px)
-            queueSample(px, py, order.index(0, px, py),
-                        (py - region.y0) * regionWidth + (px - region.x0));
-    }
+    for (const SampleRequest& r : requests)
+        queueSample(r.px, r.py, r.k, r.target);
     pushSampleRays(blocks);
-    traceInto(firstPass_, stats);
+    traceInto(firstPass, stats);
     shadowCylinders_ = cylinders;
+    clearRays();
+}
 
-    // The tile's pixels from their first samples, then the rest where they are wanted.
-    markPixelsToRefine(region, tile, firstPass_, *shader_, firstDisplay_, refine_);
-    const int width = tile.x1 - tile.x0;
-    pixels.resize(size_t(width) * size_t(tile.y1 - tile.y0));
-    for (int py = tile.y0; py < tile.y1; ++py) {
-        const PixelSamples* from = firstPass_.data() +
-                                   size_t(py - region.y0) * size_t(regionWidth) +
-                                   (tile.x0 - region.x0);
-        std::copy(from, from + width, pixels.begin() + ptrdiff_t(py - tile.y0) * width);
+void LaneTileRenderer::traceRound(std::span<const SampleRequest> round,
+                                  std::vector<PixelSamples>& pixels,
+                                  const DeviationTracking* tracking, bool last) {
+    LaneTileStats& stats = *adaptiveStats_;
+    stats.rays += int64_t(round.size());
+    for (const SampleRequest& r : round)
+        queueSample(r.px, r.py, r.k, r.target);
+    pushSampleRays(adaptiveBlocks_);
+    // Whole rounds per batch: each pixel's samples are summed in the order of the rounds.
+    if (rays_.size() >= kRefinementBatch || last) {
+        tracking_ = tracking;
+        traceInto(pixels, stats);
+        tracking_ = nullptr;
+        clearRays();
     }
-    // Step 2: each later sample's colour against the first's.
-    secondReference_.resize(pixels.size());
-    deviation_.assign(pixels.size(), 0.0f);
-    for (size_t i = 0; i < pixels.size(); ++i) {
-        // (Pixels of kTakeAll take these samples too, their deviations unread.)
-        if (refine_[i] != kKeepFirst) secondReference_[i] = firstDisplay(pixels[i], *shader_);
-    }
-    tracking_ = true;
-    refineSamples(tile, blocks, order, first, order.second(), kTakeSecond, pixels, stats);
-    tracking_ = false;
-    for (size_t i = 0; i < pixels.size(); ++i) {
-        if (refine_[i] == kTakeSecond && secondSamplesDisagree(pixels[i], deviation_[i]))
-            refine_[i] = kTakeAll;
-    }
-    refineSamples(tile, blocks, order, first, samples_, kTakeAll, pixels, stats);
 }
 
 void LaneTileRenderer::clearRays() {
@@ -83,36 +76,6 @@ void LaneTileRenderer::clearRays() {
     rayPixel_.clear();
     rayBlock_.clear();
     bypass_.clear();
-}
-
-void LaneTileRenderer::refineSamples(const Tile& tile, const Tile& blocks,
-                                     const AdaptiveSampling& order, int from, int to, uint8_t least,
-                                     std::vector<PixelSamples>& pixels, LaneTileStats& stats) {
-    const int width = tile.x1 - tile.x0;
-    // The pixels that take these samples, in the tile's order (a loop over all of its pixels
-    // for each sample index cost 6% of an adaptive render).
-    std::vector<int>& chosen = refinedPixels_;
-    chosen.clear();
-    for (size_t i = 0; i < refine_.size(); ++i) {
-        if (refine_[i] >= least && pixels[i].samples < to) chosen.push_back(int(i));
-    }
-    clearRays();
-    for (int j = from; j < to; ++j) {
-        for (const int i : chosen) {
-            PixelSamples& pixel = pixels[size_t(i)];
-            if (pixel.samples > j) continue;
-            queueSample(tile.x0 + i % width, tile.y0 + i / width,
-                        order.index(j, tile.x0 + i % width, tile.y0 + i / width), i);
-            ++pixel.samples;
-            ++stats.rays;
-        }
-        pushSampleRays(blocks);
-        // Whole samples per batch: each pixel's samples are summed in the order j.
-        if (rays_.size() >= kRefinementBatch || j + 1 == to) {
-            traceInto(pixels, stats);
-            clearRays();
-        }
-    }
 }
 
 void LaneTileRenderer::pushSampleRays(const Tile& blocks) {
@@ -176,12 +139,7 @@ void LaneTileRenderer::traceInto(std::vector<PixelSamples>& pixels, LaneTileStat
             pixel.normalSum += normals_[h];
             pixel.trapSum += hitEstimates_[h].trap;
         }
-        if (tracking_) {
-            float& deviation = deviation_[size_t(hits_[h].pixel)];
-            deviation = std::max(
-                deviation,
-                sampleDeviation(sample, secondReference_[size_t(hits_[h].pixel)], *shader_));
-        }
+        if (tracking_) tracking_->add(hits_[h].pixel, sample, *shader_);
     }
 }
 

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "quaternia/render/adaptive_driver.h"
 #include "quaternia/render/adaptive_sampling.h"
 #include "quaternia/render/camera.h"
 #include "quaternia/render/lanes/march_lanes.h"
@@ -27,7 +28,7 @@ struct LaneTileStats {
 };
 
 // One per thread: owns the batches, so that after the first tiles nothing is allocated.
-class LaneTileRenderer {
+class LaneTileRenderer : private SampleTracer {
   public:
     // shadowCylinders: hard shadow rays are shortened by a cylinder per block (clipShadowRays),
     // which changes no pixel; false only to check that. adaptive: adaptive sampling
@@ -57,9 +58,17 @@ class LaneTileRenderer {
 
   private:
     void renderUniform(const Tile& tile, std::vector<PixelSamples>& pixels, LaneTileStats& stats);
-    // Adaptive sampling (lane_tile_adaptive.cpp): the first samples of the tile and of its
-    // border (refinementRegion), then the rest of the pixels that markPixelsToRefine picks.
+    // Adaptive sampling: renderAdaptively (adaptive_driver.h) with this renderer as its tracer
+    // (lane_tile_adaptive.cpp): the first samples of the tile and of its border in one batch,
+    // then the rounds of later samples in batches of about a tile's rays.
     void renderAdaptive(const Tile& tile, std::vector<PixelSamples>& pixels, LaneTileStats& stats);
+    void traceFirstSamples(const Tile& tile, std::span<const SampleRequest> requests,
+                           std::vector<PixelSamples>& firstPass) override;
+    void traceRound(std::span<const SampleRequest> round, std::vector<PixelSamples>& pixels,
+                    const DeviationTracking* tracking, bool last) override;
+    AdaptiveScratch adaptiveScratch_;
+    Tile adaptiveBlocks_{};                   // the cone blocks of the tile and its border
+    LaneTileStats* adaptiveStats_ = nullptr;  // the tile's, while renderAdaptive runs
     // Sample k of pixel (px, py), for rays_ with rayPixel_ = target: queued, then with the
     // others queued pushed by pushSampleRays as sampleRowRays and pushRowRays make them
     // (`blocks` is the tile of blockStart_; none where its cone missed).
@@ -74,11 +83,6 @@ class LaneTileRenderer {
     std::vector<QueuedSample> queued_;
     std::vector<Ray> queuedRays_;
     std::vector<double> queuedNear_, queuedFar_;
-    // Samples j = from .. to - 1 (AdaptiveSampling::index) of the tile's pixels whose refine_
-    // is at least `least` and that have not taken them yet, into pixels.
-    void refineSamples(const Tile& tile, const Tile& blocks, const AdaptiveSampling& order,
-                       int from, int to, uint8_t least, std::vector<PixelSamples>& pixels,
-                       LaneTileStats& stats);
     void clearRays();
     // Marches and shades rays_ and adds each hit to pixels[rayPixel_].
     void traceInto(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
@@ -262,17 +266,11 @@ class LaneTileRenderer {
     bool shadowCylinders_;
     int onlySample_ = -1;
     bool adaptive_;
-    bool passes_ = false;                  // setPasses
-    std::vector<KeyLight> keyLights_;      // the key light at each hit (aimShadowRays)
-    std::vector<PixelSamples> firstPass_;  // adaptive: the first samples of the tile's region
-    std::vector<uint8_t> refine_;
-    std::vector<int> refinedPixels_;  // refineSamples' pixels
-    std::vector<Rgba> firstDisplay_;
-    // Step 2 of adaptive sampling: while tracking_, traceInto keeps each pixel's largest
-    // sampleDeviation from secondReference_ in deviation_.
-    bool tracking_ = false;
-    std::vector<Rgba> secondReference_;
-    std::vector<float> deviation_;
+    bool passes_ = false;              // setPasses
+    std::vector<KeyLight> keyLights_;  // the key light at each hit (aimShadowRays)
+    // Step 2 of adaptive sampling: where given, traceInto keeps each pixel's largest
+    // sampleDeviation there.
+    const DeviationTracking* tracking_ = nullptr;
     double boundingRadius_;
     LightConstants lightConstants_;
     // The cones' radius per unit of t, for every block of the image (coneRatio()).

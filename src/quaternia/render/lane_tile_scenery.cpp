@@ -142,11 +142,7 @@ void LaneTileRenderer::addSample(std::vector<PixelSamples>& pixels, const Sample
         pixel.normalSum += s.normal;
         pixel.trapSum += s.trap;
     }
-    if (tracking_) {
-        float& deviation = deviation_[size_t(s.pixel)];
-        deviation = std::max(deviation,
-                             sampleDeviation(color, secondReference_[size_t(s.pixel)], *shader_));
-    }
+    if (tracking_) tracking_->add(s.pixel, color, *shader_);
 }
 
 void LaneTileRenderer::seeBackground(const PathRay& path) {

@@ -6,11 +6,13 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/image/png_lanes.h"
+#include "quaternia/render/adaptive_driver.h"
 #include "quaternia/render/adaptive_sampling.h"
 #include "quaternia/render/camera.h"
 #include "quaternia/render/lane_tile_renderer.h"
@@ -32,12 +34,8 @@ struct alignas(64) ThreadTotals {
     std::unique_ptr<LaneTileRenderer> laneTiles;  // the SIMD path's batches
     bool laneTilesBound = false;                  // to this call's frame
     std::vector<PixelSamples> pixels;
-    // The scalar path's adaptive sampling: the first samples of the tile's region, the
-    // decisions (adaptive_sampling.h).
-    std::vector<PixelSamples> firstPass;
-    std::vector<uint8_t> refine;
-    std::vector<Rgba> firstDisplay;
-    std::vector<Rgba> row;  // a tile's row on its way to RenderResult::pngPixels
+    AdaptiveScratch adaptive;  // the scalar path's adaptive sampling (adaptive_driver.h)
+    std::vector<Rgba> row;     // a tile's row on its way to RenderResult::pngPixels
 };
 
 // Where render.alpha is "opaque" and the caller asked for samples: the rows go straight to PNG
@@ -144,9 +142,40 @@ class FrameRenderer {
 
   private:
     Rgba finishPixel(int px, int py, const PixelSamples& pixel, const Color& background) const;
-    // The sample's colour where it hit.
+    // Sample k of pixel (px, py) traced and added to its sums (not counted in pixel.samples);
+    // the sample's colour where it hit.
+    std::optional<Color> traceSample(int px, int py, int k, PixelSamples& pixel, RenderStats& stats,
+                                     ShadingStats& shading) const;
+    // traceSample, counted in pixel.samples.
     std::optional<Color> addSample(int px, int py, int k, PixelSamples& pixel, RenderStats& stats,
-                                   ShadingStats& shading) const;
+                                   ShadingStats& shading) const {
+        ++pixel.samples;
+        return traceSample(px, py, k, pixel, stats, shading);
+    }
+    // The scalar path as adaptive sampling's tracer: each sample on its own.
+    class ScalarSampleTracer final : public SampleTracer {
+      public:
+        ScalarSampleTracer(const FrameRenderer& frame, RenderStats& stats, ShadingStats& shading)
+            : frame_(frame), stats_(stats), shading_(shading) {}
+        void traceFirstSamples(const Tile&, std::span<const SampleRequest> requests,
+                               std::vector<PixelSamples>& firstPass) override {
+            for (const SampleRequest& r : requests)
+                frame_.traceSample(r.px, r.py, r.k, firstPass[size_t(r.target)], stats_, shading_);
+        }
+        void traceRound(std::span<const SampleRequest> round, std::vector<PixelSamples>& pixels,
+                        const DeviationTracking* tracking, bool) override {
+            for (const SampleRequest& r : round) {
+                const auto colour =
+                    frame_.traceSample(r.px, r.py, r.k, pixels[size_t(r.target)], stats_, shading_);
+                if (colour && tracking) tracking->add(r.target, *colour, frame_.shader_);
+            }
+        }
+
+      private:
+        const FrameRenderer& frame_;
+        RenderStats& stats_;
+        ShadingStats& shading_;
+    };
     Rgba displayPixel(int px, int py, const PixelSamples& pixel) const;
     Rgba renderPixel(int px, int py, RenderStats& stats) const;
     void renderTileScalar(const Tile& tile, ThreadTotals& thread) const;
@@ -282,15 +311,14 @@ Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
 }
 
 // The scalar path: sample k of the pixel marched and shaded on its own, added to its sums.
-std::optional<Color> FrameRenderer::addSample(int px, int py, int k, PixelSamples& pixel,
-                                              RenderStats& stats, ShadingStats& shading) const {
+std::optional<Color> FrameRenderer::traceSample(int px, int py, int k, PixelSamples& pixel,
+                                                RenderStats& stats, ShadingStats& shading) const {
     auto [sx, sy] = samplePosition(k, samples_, px, py);
     Ray ray = camera_.generateRay(px + sx, py + sy, lensSample(k, px, py));
     MarchResult marched = march(fractal_, ray, march_);
     stats.marchSteps += marched.steps;
     stats.iterations += marched.iterations;
     ++stats.rays;
-    ++pixel.samples;
     if (!marched.hit) return std::nullopt;
     ++pixel.hits;
     SurfaceSample surface;
@@ -326,48 +354,19 @@ Rgba FrameRenderer::renderPixel(int px, int py, RenderStats& stats) const {
     return displayPixel(px, py, pixel);
 }
 
-// The scalar path's adaptive sampling: the first samples of the tile and its border, then the
-// rest of the samples of the pixels that markPixelsToRefine picks, as the SIMD path does.
+// The scalar path's adaptive sampling: renderAdaptively (adaptive_driver.h) tracing each sample
+// on its own, then the pixels finished one by one.
 void FrameRenderer::renderTileScalarAdaptive(const Tile& tile, ThreadTotals& thread) const {
-    const AdaptiveSampling order(samples_);
-    const Tile region = refinementRegion(tile, camera_.width(), camera_.height());
-    const int regionWidth = region.x1 - region.x0;
-    auto at = [&](int px, int py) {
-        return size_t(py - region.y0) * size_t(regionWidth) + size_t(px - region.x0);
-    };
     ShadingStats shading;
-    thread.firstPass.assign(size_t(regionWidth) * size_t(region.y1 - region.y0), PixelSamples{});
-    for (int py = region.y0; py < region.y1; ++py) {
-        for (int px = region.x0; px < region.x1; ++px)
-            addSample(px, py, order.index(0, px, py), thread.firstPass[at(px, py)], thread.stats,
-                      shading);
-    }
-    markPixelsToRefine(region, tile, thread.firstPass, shader_, thread.firstDisplay, thread.refine);
-    const int width = tile.x1 - tile.x0;
+    ScalarSampleTracer tracer(*this, thread.stats, shading);
+    renderAdaptively(tile, camera_.width(), camera_.height(), samples_, shader_, tracer,
+                     thread.adaptive, thread.pixels);
+    const PixelSamples* pixel = thread.pixels.data();
     for (int py = tile.y0; py < tile.y1; ++py) {
         Rgba* row = rows_.row(thread, tile, py);
-        for (int px = tile.x0; px < tile.x1; ++px) {
-            const PixelSamples& first = thread.firstPass[at(px, py)];
-            PixelSamples pixel = first;
-            const uint8_t refine =
-                thread.refine[size_t(py - tile.y0) * size_t(width) + size_t(px - tile.x0)];
-            const int to = refine == kTakeAll      ? samples_
-                           : refine == kTakeSecond ? order.second()
-                                                   : AdaptiveSampling::kFirst;
-            const Rgba reference = refine == kTakeSecond ? firstDisplay(first, shader_) : Rgba{};
-            float deviation = 0;
-            for (int j = AdaptiveSampling::kFirst; j < to; ++j) {
-                const auto colour =
-                    addSample(px, py, order.index(j, px, py), pixel, thread.stats, shading);
-                if (colour && refine == kTakeSecond)
-                    deviation = std::max(deviation, sampleDeviation(*colour, reference, shader_));
-            }
-            if (refine == kTakeSecond && secondSamplesDisagree(pixel, deviation)) {
-                for (int j = to; j < samples_; ++j)
-                    addSample(px, py, order.index(j, px, py), pixel, thread.stats, shading);
-            }
-            thread.stats.hits += pixel.hits;
-            row[px - tile.x0] = displayPixel(px, py, pixel);
+        for (int px = tile.x0; px < tile.x1; ++px, ++pixel) {
+            thread.stats.hits += pixel->hits;
+            row[px - tile.x0] = displayPixel(px, py, *pixel);
         }
         rows_.done(tile, py, row);
     }
