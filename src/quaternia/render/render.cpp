@@ -176,11 +176,9 @@ class FrameRenderer {
         RenderStats& stats_;
         ShadingStats& shading_;
     };
-    Rgba displayPixel(int px, int py, const PixelSamples& pixel) const;
-    Rgba renderPixel(int px, int py, RenderStats& stats) const;
     void renderTileScalar(const Tile& tile, ThreadTotals& thread) const;
-    void renderTileScalarAdaptive(const Tile& tile, ThreadTotals& thread) const;
     void renderTileInLanes(const Tile& tile, ThreadTotals& thread) const;
+    void finishRows(const Tile& tile, ThreadTotals& thread) const;
     void finishRowsOnUniformBackground(const Tile& tile, ThreadTotals& thread) const;
     void finishRowsOnBackgroundRows(const Tile& tile, ThreadTotals& thread) const;
 
@@ -332,58 +330,28 @@ std::optional<Color> FrameRenderer::traceSample(int px, int py, int k, PixelSamp
     return colour;
 }
 
-// A pixel's sums to its display colour and alpha.
-Rgba FrameRenderer::displayPixel(int px, int py, const PixelSamples& pixel) const {
-    const Color background = pixel.hits < pixel.samples
-                                 ? shader_.background(camera_.generateRay(px + 0.5, py + 0.5))
-                                 : Color();
-    Rgba linear = finishPixel(px, py, pixel, background);
-    Color display = shader_.toDisplay(Color(linear.r, linear.g, linear.b));
-    return Rgba{float(display.x), float(display.y), float(display.z), linear.a};
-}
-
-// The scalar path's uniform sampling: every sample of the pixel.
-Rgba FrameRenderer::renderPixel(int px, int py, RenderStats& stats) const {
-    PixelSamples pixel;
+// The scalar path: the tile's samples traced one by one into the pixels' sums (every sample,
+// or adaptively through renderAdaptively, adaptive_driver.h), then the pixels finished as the
+// SIMD path finishes them.
+void FrameRenderer::renderTileScalar(const Tile& tile, ThreadTotals& thread) const {
     ShadingStats shading;
-    const UniformSamples taken(samples_, onlySample_);
-    for (int k = taken.first; k < taken.end; ++k)
-        addSample(px, py, k, pixel, stats, shading);
-    stats.shadingEstimates += shading.estimates;
-    stats.hits += pixel.hits;
-    return displayPixel(px, py, pixel);
-}
-
-// The scalar path's adaptive sampling: renderAdaptively (adaptive_driver.h) tracing each sample
-// on its own, then the pixels finished one by one.
-void FrameRenderer::renderTileScalarAdaptive(const Tile& tile, ThreadTotals& thread) const {
-    ShadingStats shading;
-    ScalarSampleTracer tracer(*this, thread.stats, shading);
-    renderAdaptively(tile, camera_.width(), camera_.height(), samples_, shader_, tracer,
-                     thread.adaptive, thread.pixels);
-    const PixelSamples* pixel = thread.pixels.data();
-    for (int py = tile.y0; py < tile.y1; ++py) {
-        Rgba* row = rows_.row(thread, tile, py);
-        for (int px = tile.x0; px < tile.x1; ++px, ++pixel) {
-            thread.stats.hits += pixel->hits;
-            row[px - tile.x0] = displayPixel(px, py, *pixel);
+    if (adaptive_) {
+        ScalarSampleTracer tracer(*this, thread.stats, shading);
+        renderAdaptively(tile, camera_.width(), camera_.height(), samples_, shader_, tracer,
+                         thread.adaptive, thread.pixels);
+    } else {
+        const UniformSamples taken(samples_, onlySample_);
+        thread.pixels.assign(size_t(tile.x1 - tile.x0) * size_t(tile.y1 - tile.y0), PixelSamples{});
+        PixelSamples* pixel = thread.pixels.data();
+        for (int py = tile.y0; py < tile.y1; ++py) {
+            for (int px = tile.x0; px < tile.x1; ++px, ++pixel) {
+                for (int k = taken.first; k < taken.end; ++k)
+                    addSample(px, py, k, *pixel, thread.stats, shading);
+            }
         }
-        rows_.done(tile, py, row);
     }
     thread.stats.shadingEstimates += shading.estimates;
-}
-
-void FrameRenderer::renderTileScalar(const Tile& tile, ThreadTotals& thread) const {
-    if (adaptive_) {
-        renderTileScalarAdaptive(tile, thread);
-        return;
-    }
-    for (int py = tile.y0; py < tile.y1; ++py) {
-        Rgba* row = rows_.row(thread, tile, py);
-        for (int px = tile.x0; px < tile.x1; ++px)
-            row[px - tile.x0] = renderPixel(px, py, thread.stats);
-        rows_.done(tile, py, row);
-    }
+    finishRows(tile, thread);
 }
 
 // The SIMD path: the tile's samples summed per pixel by the thread's LaneTileRenderer, then
@@ -405,6 +373,12 @@ void FrameRenderer::renderTileInLanes(const Tile& tile, ThreadTotals& thread) co
     LaneTileStats tileStats;
     thread.laneTiles->render(tile, thread.pixels, tileStats);
     thread.stats += statsOf(tileStats);
+    finishRows(tile, thread);
+}
+
+// The tile's pixels from their sums (thread.pixels) to the result's rows: the same for both
+// engines.
+void FrameRenderer::finishRows(const Tile& tile, ThreadTotals& thread) const {
     if (uniformBackground_) {
         finishRowsOnUniformBackground(tile, thread);
     } else {
