@@ -22,8 +22,7 @@ void LaneTileRenderer::lightGround(LaneTileStats& stats) {
     const double offset = 1e-6 * boundingRadius_;
     // Each light's visibility at every ground point (1 where it needs no shadow ray).
     auto visibilities = [&](const LightSource& light, std::vector<double>& out) {
-        shadowRays_.clear();
-        shadowHit_.clear();
+        shadows_.clear();
         out.assign(count, 1.0);
         if (light.shadows == Shadows::None) return;
         // A directional light is the same at every point.
@@ -37,13 +36,13 @@ void LaneTileRenderer::lightGround(LaneTileStats& stats) {
             const Ray ray{p.x + n * offset, at.toLight};
             auto interval = shader_->shadowIntervalOf(ray, at, light);
             if (!interval) continue;
-            shadowRays_.push(ray, interval->tNear, interval->tFar);
-            shadowHit_.push_back(int(g));
+            shadows_.push(ray, interval->tNear, interval->tFar, int(g));
         }
         clearLitGroundShadows(light, stats);
         marchShadowsOf(light, stats);
-        for (size_t r = 0; r < shadowHit_.size(); ++r)
-            out[size_t(shadowHit_[r])] = shader_->visibilityOf(light, shadowVisibility_[r]);
+        for (size_t r = 0; r < shadows_.size(); ++r)
+            out[size_t(shadows_.owners()[r])] =
+                shader_->visibilityOf(light, shadows_.visibility()[r]);
     };
     visibilities(shader_->keySource(), groundKeyVisibility_);
     groundColor_.assign(count, Color());
@@ -151,79 +150,16 @@ void LaneTileRenderer::shadeCameraGround(std::vector<PixelSamples>& pixels, Lane
 }
 
 void LaneTileRenderer::clearLitGroundShadows(const LightSource& light, LaneTileStats& stats) {
-    // The shadow rays of a directional light from the ground points of one block of 4x4 camera
-    // pixels are parallel and start close together. A cone about them, from the nearest origin
-    // along the light, of radius r + s / k at s along it (r holding every origin off its axis,
-    // k the penumbra's sharpness; 0 for hard shadows), marched as the camera's cones are (steps
-    // of the estimate less the radius, ending where the estimate falls below 1.2 radii), proves
-    // where it gets through that every ray of the block passes at h >= t / k from the set at
-    // every t along it: min k h / t >= 1, fully lit, and no ray of it need be marched.
-    // (Most of the ground sees the light past the set's bounding sphere but far from the set.)
-    // Only in a uniform pass (one sample of every pixel of the tile in the batch, sampleKey_):
-    // adaptive sampling's batches hold the tile's border (its first samples, whose pixels
-    // are not on the tile's grid of blocks) or several samples of some pixels, as many as the
-    // tile's size lets a batch hold; rays that start where a cone of such a group was clear
-    // would change with the tile size by a rounding, and the decisions with them.
+    // A cone per block of 4x4 camera pixels (ShadowRays::clearLitByCones). Only in a uniform pass
+    // (one sample of every pixel of the tile in the batch, sampleKey_): adaptive sampling's batches
+    // hold the tile's border (its first samples, whose pixels are not on the tile's grid of blocks)
+    // or several samples of some pixels, as many as the tile's size lets a batch hold; rays that
+    // start where a cone of such a group was clear would change with the tile size by a rounding,
+    // and the decisions with them.
     if (!shadowCylinders_ || sampleKey_ < 0) return;
-    if (light.kind != LightKind::Directional || shadowHit_.size() < kMinCylinderRays) return;
-    const size_t count = shadowHit_.size();
-    std::vector<int>& block = groundBlock_;
-    block.resize(count);
-    for (size_t r = 0; r < count; ++r)
-        block[r] = groundPoints_[size_t(shadowHit_[r])].block;
-    std::vector<int>& order = shadowOrder_;
-    order.resize(count);
-    for (size_t r = 0; r < count; ++r)
-        order[r] = int(r);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return block[size_t(a)] < block[size_t(b)]; });
-    const Vector3d& l = light.direction;
-    cylinders_.clear();
-    cylinderRays_.clear();
-    for (size_t first = 0; first < count;) {
-        size_t end = first + 1;
-        while (end < count && block[size_t(order[end])] == block[size_t(order[first])])
-            ++end;
-        if (block[size_t(order[first])] >= 0 && end - first >= kMinCylinderRays) {
-            const RayBundle bundle = bundleOf(first, end, l);
-            cylinders_.push(Ray{bundle.centre + l * bundle.nearest, l}, 0,
-                            bundle.farthest - bundle.nearest);
-            cylinders_.spread.push_back(bundle.radius);
-            cylinderRays_.push_back({first, end});
-        }
-        first = end;
-    }
-    if (cylinders_.size() == 0) return;
-    CameraMarch coneMarch = march_;
-    coneMarch.cone = true;
-    coneMarch.epsilon = 1.2;
-    coneMarch.pixelAngle = light.shadows == Shadows::Soft ? 1 / light.softness : 0.0;
-    traceCameraRays(lanes_, coneMarch, cylinders_, cylinderResults_, stats.shading);
-    shadowClear_.assign(count, 0);
-    size_t cleared = 0;
-    for (size_t c = 0; c < cylinders_.size(); ++c) {
-        const TraceResult& result = cylinderResults_[c];
-        const bool whole = result.end == TraceEnd::Miss && result.steps < march_.maxSteps;
-        // The cone's start and where it was last clear: before that, every ray of it is lit
-        // (k h / t >= 1 there), so its own march starts there.
-        const Point3d start(cylinders_.ox[c], cylinders_.oy[c], cylinders_.oz[c]);
-        for (size_t i = cylinderRays_[c].first; i < cylinderRays_[c].second; ++i) {
-            const size_t r = size_t(order[i]);
-            const double clearTo = result.tOutside - dot(shadowRayOrigin(r) - start, l);
-            if (whole || clearTo >= shadowRays_.tFar[r]) {
-                shadowClear_[r] = 1;
-                ++cleared;
-            } else {
-                shadowRays_.tNear[r] = std::max(shadowRays_.tNear[r], clearTo);
-            }
-        }
-    }
-    if (cleared == 0) return;
-    shadowRays_.removeFlagged(shadowClear_);
-    size_t kept = 0;
-    for (size_t r = 0; r < count; ++r)
-        if (!shadowClear_[r]) shadowHit_[kept++] = shadowHit_[r];
-    shadowHit_.resize(kept);
+    shadows_.clearLitByCones(
+        lanes_, march_, light, boundingRadius_,
+        [&](int point) { return groundPoints_[size_t(point)].block; }, stats.shading);
 }
 
 }  // namespace quaternia

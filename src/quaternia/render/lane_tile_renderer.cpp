@@ -324,8 +324,7 @@ void LaneTileRenderer::hitNormals(LaneTileStats& stats) {
 }
 
 void LaneTileRenderer::aimShadowRays() {
-    shadowRays_.clear();
-    shadowHit_.clear();
+    shadows_.clear();
     keyLights_.resize(hits_.size());
     for (size_t h = 0; h < hits_.size(); ++h) {
         const Vector3d& n = normals_[h];
@@ -336,18 +335,11 @@ void LaneTileRenderer::aimShadowRays() {
         Ray ray{origin, key.toLight};
         auto interval = shader_->shadowInterval(ray, key);
         if (!interval) continue;
-        shadowRays_.push(ray, 0, interval->tFar);
-        shadowHit_.push_back(int(h));
+        shadows_.push(ray, 0, interval->tFar, int(h));
     }
 }
 
 void LaneTileRenderer::marchShadowRays(LaneTileStats& stats) {
-    if (shadowCylinders_ && shader_->shadows() == Shadows::Hard &&
-        shader_->keyLightIsDirectional()) {
-        clipShadowRays(stats);
-    } else {
-        shadowClear_.clear();  // none cleared (a batch with cylinders may have left flags)
-    }
     ShadowMarch shadowMarch;
     shadowMarch.minimumStep = shader_->shadowMinimumStep();
     shadowMarch.softness = shader_->shadowSoftness();
@@ -355,21 +347,22 @@ void LaneTileRenderer::marchShadowRays(LaneTileStats& stats) {
     shadowMarch.maxSteps = Shader::kShadowSteps;
     shadowMarch.relaxation = Shader::kShadowRelaxation;
     shadowMarch.maxRelaxation = Shader::kShadowMaxRelaxation;
-    traceShadowRays(lanes_, shadowMarch, shadowRays_, shadowVisibility_, stats.shading);
-    // The rays that the cylinders cleared whole were left out of the march (clipShadowRays).
-    if (!shadowClear_.empty()) {
-        marchedVisibility_.swap(shadowVisibility_);
-        shadowVisibility_.assign(shadowHit_.size(), 1.0);
-        for (size_t r = 0, marched = 0; r < shadowHit_.size(); ++r) {
-            if (!shadowClear_[r]) shadowVisibility_[r] = marchedVisibility_[marched++];
-        }
+    if (shadowCylinders_ && shader_->shadows() == Shadows::Hard &&
+        shader_->keyLightIsDirectional()) {
+        shadows_.marchClippedHardShadows(
+            lanes_, march_, shadowMarch, shader_->lightDirection(), boundingRadius_, tileBlocks_,
+            [&](int hit) { return hits_[size_t(hit)].block; }, stats.shading);
+    } else {
+        shadows_.march(lanes_, shadowMarch, stats.shading);
     }
 }
 
 void LaneTileRenderer::sampleSurfaces() {
     surfaces_.resize(hits_.size());
     const bool orbit = shader_->albedoUsesOrbit();
-    size_t nextShadow = 0;  // shadowHit_ is in order: the next shadow ray is this hit's or later
+    // The shadow rays' owners are in order: the next shadow ray is this hit's or later.
+    const std::vector<int>& shadowHit = shadows_.owners();
+    size_t nextShadow = 0;
     for (size_t h = 0; h < hits_.size(); ++h) {
         const Vector3d& n = normals_[h];
         const Vector3d& direction = hits_[h].direction;
@@ -378,8 +371,8 @@ void LaneTileRenderer::sampleSurfaces() {
         double visibility = 1;  // no shadows, or the shadow ray leaves the bounding sphere
         if (!(Shader::keyDiffuse(n, key) > 0)) {
             visibility = 0;
-        } else if (nextShadow < shadowHit_.size() && shadowHit_[nextShadow] == int(h)) {
-            visibility = shader_->visibilityFromMarch(shadowVisibility_[nextShadow++]);
+        } else if (nextShadow < shadowHit.size() && shadowHit[nextShadow] == int(h)) {
+            visibility = shader_->visibilityFromMarch(shadows_.visibility()[nextShadow++]);
         }
         double occlusion = 1;
         if (this->occlusion()) {
@@ -397,115 +390,6 @@ void LaneTileRenderer::sampleSurfaces() {
         s.visibility[h] = float(visibility);
         s.occlusion[h] = float(occlusion);
     }
-}
-
-void LaneTileRenderer::clipShadowRays(LaneTileStats& stats) {
-    // Hard shadow rays of one block of pixels are parallel (the key light is a direction) and
-    // start within a few footprints of each other. A cylinder about them that holds all their
-    // origins, marched as a cone of constant radius from the far side of the bounding sphere
-    // towards them (step: the estimate less the radius), proves the set absent from the part
-    // of every ray beyond where it stopped (as the cones of the camera rays do, marchCones), so
-    // each ray is marched only from its origin to there; a cylinder that gets past every
-    // origin clears its rays whole. It stops where the set comes within 1.2 radii: at an
-    // occluder, whose rays then meet it on their own, or at the surface the rays start from.
-    shadowClear_.clear();
-    if (shadowHit_.empty()) return;
-    orderShadowRaysByBlock();
-    cylinders_.clear();
-    cylinderRays_.clear();  // the rays of each cylinder: a range of shadowOrder_
-    for (size_t block = 0; block < size_t(tileBlocks_); ++block) {
-        const size_t first = size_t(blockStarts_[block]), end = size_t(blockStarts_[block + 1]);
-        if (end - first >= kMinCylinderRays) pushCylinder(first, end);
-    }
-    if (cylinders_.size() == 0) return;
-    CameraMarch cylinderMarch = march_;
-    cylinderMarch.cone = true;
-    cylinderMarch.epsilon = 1.2;
-    cylinderMarch.pixelAngle = 0;
-    traceCameraRays(lanes_, cylinderMarch, cylinders_, cylinderResults_, stats.shading);
-    // The batch to march: the rays not cleared whole, in their order. (A cylinder stops at the
-    // surface its rays start from, so most frames clear none: then the batch stays as it is.)
-    if (shortenShadowRays() == 0) {
-        shadowClear_.clear();
-        return;
-    }
-    shadowRays_.removeFlagged(shadowClear_);
-}
-
-void LaneTileRenderer::orderShadowRaysByBlock() {
-    // A counting sort: hits come in rows, so the rays of each block stay in order.
-    const size_t count = shadowHit_.size();
-    auto blockOf = [&](size_t r) { return size_t(hits_[size_t(shadowHit_[r])].block); };
-    blockStarts_.assign(size_t(tileBlocks_) + 1, 0);
-    for (size_t r = 0; r < count; ++r)
-        ++blockStarts_[blockOf(r) + 1];
-    for (size_t b = 0; b < size_t(tileBlocks_); ++b)
-        blockStarts_[b + 1] += blockStarts_[b];
-    shadowOrder_.resize(count);
-    blockFill_.assign(blockStarts_.begin(), blockStarts_.end() - 1);
-    for (size_t r = 0; r < count; ++r)
-        shadowOrder_[size_t(blockFill_[blockOf(r)]++)] = int(r);
-}
-
-Point3d LaneTileRenderer::shadowRayOrigin(size_t r) const {
-    return Point3d(shadowRays_.ox[r], shadowRays_.oy[r], shadowRays_.oz[r]);
-}
-
-LaneTileRenderer::RayBundle LaneTileRenderer::bundleOf(size_t first, size_t end,
-                                                       const Vector3d& direction) const {
-    Vector3d sum;
-    for (size_t k = first; k < end; ++k)
-        sum += Vector3d(shadowRayOrigin(size_t(shadowOrder_[k])));
-    RayBundle bundle;
-    bundle.centre = Point3d(sum / double(end - first));
-    // The widest offset of an origin from the axis, and the axial extent from the nearest
-    // origin to the farthest end of a ray.
-    double widest = 0;
-    bundle.nearest = std::numeric_limits<double>::infinity();
-    bundle.farthest = -bundle.nearest;
-    for (size_t k = first; k < end; ++k) {
-        const size_t r = size_t(shadowOrder_[k]);
-        const Vector3d offset = shadowRayOrigin(r) - bundle.centre;
-        const double along = dot(offset, direction);
-        widest = std::max(widest, dot(offset, offset) - along * along);
-        bundle.nearest = std::min(bundle.nearest, along);
-        bundle.farthest = std::max(bundle.farthest, along + shadowRays_.tFar[r]);
-    }
-    // A margin for rounding, and never a zero radius.
-    bundle.radius = std::sqrt(std::max(0.0, widest)) * (1 + 1e-6) + 1e-9 * boundingRadius_;
-    return bundle;
-}
-
-void LaneTileRenderer::pushCylinder(size_t first, size_t end) {
-    const Vector3d light = shader_->lightDirection();
-    const RayBundle b = bundleOf(first, end, light);
-    cylinders_.push(Ray{b.centre + light * b.farthest, -light}, 0, b.farthest - b.nearest);
-    cylinders_.spread.push_back(b.radius);
-    cylinderRays_.push_back({first, end});
-}
-
-size_t LaneTileRenderer::shortenShadowRays() {
-    // A cylinder is clear from its far end to tOutside (to its end where it missed); on a ray,
-    // that is from (far end - origin) . light - tOutside on.
-    const Vector3d light = shader_->lightDirection();
-    shadowClear_.assign(shadowHit_.size(), 0);
-    size_t cleared = 0;
-    for (size_t c = 0; c < cylinders_.size(); ++c) {
-        const TraceResult& result = cylinderResults_[c];
-        const bool whole = result.end == TraceEnd::Miss && result.steps < march_.maxSteps;
-        const Point3d farEnd(cylinders_.ox[c], cylinders_.oy[c], cylinders_.oz[c]);
-        for (size_t k = cylinderRays_[c].first; k < cylinderRays_[c].second; ++k) {
-            const size_t r = size_t(shadowOrder_[k]);
-            const double clearFrom = dot(farEnd - shadowRayOrigin(r), light) - result.tOutside;
-            if (whole || clearFrom <= 0) {
-                shadowClear_[r] = 1;
-                ++cleared;
-            } else {
-                shadowRays_.tFar[r] = std::min(shadowRays_.tFar[r], clearFrom);
-            }
-        }
-    }
-    return cleared;
 }
 
 }  // namespace quaternia

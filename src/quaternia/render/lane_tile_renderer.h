@@ -16,6 +16,7 @@
 #include "quaternia/render/optics.h"
 #include "quaternia/render/sample_pattern.h"
 #include "quaternia/render/shade.h"
+#include "quaternia/render/shadow_rays.h"
 #include "quaternia/util/parallel.h"
 
 namespace quaternia {
@@ -182,16 +183,16 @@ class LaneTileRenderer : private SampleTracer {
     void shadeGround(LaneTileStats& stats);
     // The camera rays of cameraGround_, which see the ground and nothing else, into pixels.
     void shadeCameraGround(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
-    // Leaves out of shadowRays_ (and shadowHit_) the ground's shadow rays of a directional
-    // light that a cone about each block's rays proves fully lit.
+    // Leaves out of shadows_ the ground's shadow rays of a directional light that a cone about
+    // each block's rays proves fully lit.
     void clearLitGroundShadows(const LightSource& light, LaneTileStats& stats);
-    std::vector<int> groundBlock_;
     SurfaceBatch groundSurfaces_;
     // The lights of [light1] .. [light7] at the hits of hits_, added to surfaces_' colours.
     void lightOthers(LaneTileStats& stats);
-    // Shadow-ray visibility of `light` from points (origins of shadowRays_ as aimed by the
-    // caller): marched in lanes, into shadowVisibility_.
+    // Shadow-ray visibility of `light` from points (the rays of shadows_ as aimed by the
+    // caller): marched in lanes.
     void marchShadowsOf(const LightSource& light, LaneTileStats& stats);
+    ShadowMarch shadowMarchOf(const LightSource& light) const;
     // Inside waves: per path, the fixed step index, the bracket of the exit, bisection rounds.
     PointBatch insidePoints_;
     std::vector<PointEstimate> insideEstimates_;
@@ -228,35 +229,15 @@ class LaneTileRenderer : private SampleTracer {
     // The hits' normals, in normals_, facing the camera; with orbit colouring also the
     // estimates at the hits (hitEstimates_).
     void hitNormals(LaneTileStats& stats);
-    // The shadow rays of the hits whose surface faces the key light, in shadowRays_ (with
-    // shadowHit_): none where the ray misses the bounding sphere.
+    // The shadow rays of the hits whose surface faces the key light, in shadows_: none where the
+    // ray misses the bounding sphere.
     void aimShadowRays();
-    // The shadow rays' visibility, in shadowVisibility_.
+    // The key light's shadow rays marched (hard shadows of a directional light through
+    // cylinders per block, ShadowRays::marchClippedHardShadows).
     void marchShadowRays(LaneTileStats& stats);
     // Each hit's surface sample (normal, view direction, albedo, visibility, occlusion), in
     // surfaces_.
     void sampleSurfaces();
-    // Hard shadows: one cylinder about the shadow rays of each block of kConeBlock^2 pixels
-    // with at least kMinCylinderRays of them shortens them to where it stopped, and leaves out
-    // of shadowRays_ those it cleared whole (shadowClear_).
-    static constexpr size_t kMinCylinderRays = 4;
-    void clipShadowRays(LaneTileStats& stats);
-    // The shadow rays block by block, in shadowOrder_ (block b's from blockStarts_[b]).
-    void orderShadowRaysByBlock();
-    Point3d shadowRayOrigin(size_t r) const;
-    // The cylinder about the shadow rays shadowOrder_[first, end), into cylinders_.
-    void pushCylinder(size_t first, size_t end);
-    // The shadow rays shadowOrder_[first, end) about an axis along `direction` through their
-    // origins' centre: the radius that holds every origin, and the extent along the axis from
-    // the nearest origin to the farthest ray end (each as the offset from the centre).
-    struct RayBundle {
-        Point3d centre;
-        double radius, nearest, farthest;
-    };
-    RayBundle bundleOf(size_t first, size_t end, const Vector3d& direction) const;
-    // Shortens each cylinder's rays to where it stopped, and flags in shadowClear_ those it
-    // cleared whole; returns how many.
-    size_t shortenShadowRays();
 
     LaneFractal lanes_;
     const Camera* camera_;
@@ -307,16 +288,10 @@ class LaneTileRenderer : private SampleTracer {
     std::vector<PointEstimate> hitEstimates_;
     std::vector<int> gradientIterations_;
     std::vector<Vector3d> normals_;
-    RayBatch shadowRays_;
-    std::vector<int> shadowHit_;
-    std::vector<double> shadowVisibility_, marchedVisibility_;
+    // The shadow rays of the batch's points (shadow_rays.h); their owners are indices of hits_
+    // or groundPoints_.
+    ShadowRays shadows_;
     int tileBlocks_ = 0;
-    std::vector<int> blockStarts_, blockFill_;
-    std::vector<int> shadowOrder_;  // the shadow rays, block by block
-    RayBatch cylinders_;
-    std::vector<std::pair<size_t, size_t>> cylinderRays_;
-    std::vector<TraceResult> cylinderResults_;
-    std::vector<uint8_t> shadowClear_;
     PointBatch occlusionPoints_;
     std::vector<double> occlusionDistances_;
     SurfaceBatch surfaces_;  // each hit's surface sample and, once lit, its colour

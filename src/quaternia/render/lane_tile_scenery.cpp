@@ -435,6 +435,10 @@ void LaneTileRenderer::traceInsideWave(LaneTileStats& stats) {
 }
 
 void LaneTileRenderer::marchShadowsOf(const LightSource& light, LaneTileStats& stats) {
+    shadows_.march(lanes_, shadowMarchOf(light), stats.shading);
+}
+
+ShadowMarch LaneTileRenderer::shadowMarchOf(const LightSource& light) const {
     ShadowMarch shadowMarch;
     shadowMarch.minimumStep = shader_->shadowMinimumStep();
     shadowMarch.softness = light.softness;
@@ -442,13 +446,12 @@ void LaneTileRenderer::marchShadowsOf(const LightSource& light, LaneTileStats& s
     shadowMarch.maxSteps = Shader::kShadowSteps;
     shadowMarch.relaxation = Shader::kShadowRelaxation;
     shadowMarch.maxRelaxation = Shader::kShadowMaxRelaxation;
-    traceShadowRays(lanes_, shadowMarch, shadowRays_, shadowVisibility_, stats.shading);
+    return shadowMarch;
 }
 
 void LaneTileRenderer::lightOthers(LaneTileStats& stats) {
     for (const LightSource& light : shader_->extraLights()) {
-        shadowRays_.clear();
-        shadowHit_.clear();
+        shadows_.clear();
         otherLights_.resize(hits_.size());
         for (size_t h = 0; h < hits_.size(); ++h) {
             const KeyLight& at = otherLights_[h] = Shader::illumination(light, hits_[h].outside);
@@ -459,15 +462,15 @@ void LaneTileRenderer::lightOthers(LaneTileStats& stats) {
                           at.toLight};
             auto interval = shader_->shadowIntervalOf(ray, at, light);
             if (!interval) continue;
-            shadowRays_.push(ray, 0, interval->tFar);
-            shadowHit_.push_back(int(h));
+            shadows_.push(ray, 0, interval->tFar, int(h));
         }
         marchShadowsOf(light, stats);
+        const std::vector<int>& shadowHit = shadows_.owners();
         size_t next = 0;
         for (size_t h = 0; h < hits_.size(); ++h) {
             double visibility = 1;
-            if (next < shadowHit_.size() && shadowHit_[next] == int(h))
-                visibility = shader_->visibilityOf(light, shadowVisibility_[next++]);
+            if (next < shadowHit.size() && shadowHit[next] == int(h))
+                visibility = shader_->visibilityOf(light, shadows_.visibility()[next++]);
             else if (light.shadows != Shadows::None)
                 visibility = Shader::keyDiffuse(normals_[h], otherLights_[h]) > 0 ? 1.0 : 0.0;
             const Color albedo(surfaces_.albedoR[h], surfaces_.albedoG[h], surfaces_.albedoB[h]);
