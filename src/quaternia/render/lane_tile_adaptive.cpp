@@ -37,7 +37,7 @@ void LaneTileRenderer::traceFirstSamples(const Tile& tile, std::span<const Sampl
     tileBlocks_ = blocksAcross * ((blocks.y1 - blocks.y0 + kConeBlock - 1) / kConeBlock);
     adaptiveBlocks_ = blocks;
     LaneTileStats& stats = *adaptiveStats_;
-    marchCones(blocks, stats);
+    cameraRays_.marchCones(lanes_, blocks, stats.marchSteps, stats.camera);
 
     // In one batch, without shadow cylinders: a cylinder holds the rays of its block in the
     // batch, which for a border pixel are not those of its own tile, and a cylinder may change a
@@ -47,8 +47,8 @@ void LaneTileRenderer::traceFirstSamples(const Tile& tile, std::span<const Sampl
     shadowCylinders_ = false;
     clearRays();
     for (const SampleRequest& r : requests)
-        queueSample(r.px, r.py, r.k, r.target);
-    pushSampleRays(blocks);
+        cameraRays_.queue(r.px, r.py, r.k, r.target);
+    cameraRays_.pushQueued(blocks, cameraRayTargets());
     traceInto(firstPass, stats);
     shadowCylinders_ = cylinders;
     clearRays();
@@ -60,8 +60,8 @@ void LaneTileRenderer::traceRound(std::span<const SampleRequest> round,
     LaneTileStats& stats = *adaptiveStats_;
     stats.rays += int64_t(round.size());
     for (const SampleRequest& r : round)
-        queueSample(r.px, r.py, r.k, r.target);
-    pushSampleRays(adaptiveBlocks_);
+        cameraRays_.queue(r.px, r.py, r.k, r.target);
+    cameraRays_.pushQueued(adaptiveBlocks_, cameraRayTargets());
     // Whole rounds per batch: each pixel's samples are summed in the order of the rounds.
     if (rays_.size() >= kRefinementBatch || last) {
         tracking_ = tracking;
@@ -76,46 +76,6 @@ void LaneTileRenderer::clearRays() {
     rayPixel_.clear();
     rayBlock_.clear();
     bypass_.clear();
-}
-
-void LaneTileRenderer::pushSampleRays(const Tile& blocks) {
-    // In three loops: the sample positions (a hash each), the rays and where they cross the
-    // bounding sphere (a chain of a division and two square roots per ray, which in a loop
-    // without calls or stores to growing vectors overlaps from ray to ray), then the batch.
-    const size_t count = queued_.size();
-    for (QueuedSample& q : queued_) {
-        auto [sx, sy] = samplePosition(q.k, samples_, q.px, q.py);
-        q.x = q.px + sx, q.y = q.py + sy;
-    }
-    queuedRays_.resize(count);
-    queuedNear_.resize(count);
-    queuedFar_.resize(count);
-    for (size_t i = 0; i < count; ++i) {
-        const QueuedSample& q = queued_[i];
-        const Ray ray = camera_->thinLens()
-                            ? camera_->generateRay(q.x, q.y, lensSample(q.k, q.px, q.py))
-                            : camera_->generateRay(q.x, q.y);
-        auto interval = intersectSphere(ray, boundingRadius_);
-        queuedRays_[i] = ray;
-        queuedNear_[i] = interval ? interval->tNear : 1;
-        queuedFar_[i] = interval ? interval->tFar : -1;  // none: tNear > tFar
-    }
-    const int blocksAcross = (blocks.x1 - blocks.x0 + kConeBlock - 1) / kConeBlock;
-    for (size_t i = 0; i < count; ++i) {
-        const QueuedSample& q = queued_[i];
-        const int block =
-            (q.py - blocks.y0) / kConeBlock * blocksAcross + (q.px - blocks.x0) / kConeBlock;
-        const double near = std::max(queuedNear_[i], blockStart_[size_t(block)]);
-        // The cone or the bounding sphere missed: the ray skips the set.
-        if (!(near <= queuedFar_[i])) {
-            if (bypassing_) bypass_.push_back({queuedRays_[i], q.target});
-            continue;
-        }
-        rays_.push(queuedRays_[i], near, queuedFar_[i]);
-        rayPixel_.push_back(q.target);
-        rayBlock_.push_back(block);
-    }
-    queued_.clear();
 }
 
 void LaneTileRenderer::traceInto(std::vector<PixelSamples>& pixels, LaneTileStats& stats) {

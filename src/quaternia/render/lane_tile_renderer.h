@@ -11,6 +11,7 @@
 #include "quaternia/render/adaptive_driver.h"
 #include "quaternia/render/adaptive_sampling.h"
 #include "quaternia/render/camera.h"
+#include "quaternia/render/camera_rays.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/march.h"
 #include "quaternia/render/optics.h"
@@ -70,21 +71,14 @@ class LaneTileRenderer : private SampleTracer {
     AdaptiveScratch adaptiveScratch_;
     Tile adaptiveBlocks_{};                   // the cone blocks of the tile and its border
     LaneTileStats* adaptiveStats_ = nullptr;  // the tile's, while renderAdaptive runs
-    // Sample k of pixel (px, py), for rays_ with rayPixel_ = target: queued, then with the
-    // others queued pushed by pushSampleRays as sampleRowRays and pushRowRays make them
-    // (`blocks` is the tile of blockStart_; none where its cone missed).
-    void queueSample(int px, int py, int k, int target) {
-        queued_.push_back({px, py, k, target, 0, 0});
-    }
-    void pushSampleRays(const Tile& blocks);
-    struct QueuedSample {
-        int px, py, k, target;
-        double x, y;  // the image point (samplePosition)
-    };
-    std::vector<QueuedSample> queued_;
-    std::vector<Ray> queuedRays_;
-    std::vector<double> queuedNear_, queuedFar_;
     void clearRays();
+    // The camera rays of the tile (camera_rays.h), into rays_, rayPixel_, rayBlock_ and, where
+    // rays that skip the set still count (bypassing_), bypass_.
+    CameraRays cameraRays_;
+    CameraRayBatch cameraRayTargets() {
+        return {rays_, rayPixel_, rayBlock_, bypassing_ ? &bypass_ : nullptr};
+    }
+    static constexpr int kConeBlock = CameraRays::kConeBlock;
     // Marches and shades rays_ and adds each hit to pixels[rayPixel_].
     void traceInto(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
 
@@ -99,10 +93,6 @@ class LaneTileRenderer : private SampleTracer {
     bool occlusion() const { return shader_->occlusionEnabled() && !secondaryWave_; }
     bool bypassing_ = false;  // the ground or the glow: rays that skip the set still count
     bool groundShortcut_ = true;
-    struct BypassRay {
-        Ray ray;
-        int pixel;
-    };
     std::vector<BypassRay> bypass_;
     // A ray of a path: where it goes, which camera sample it serves (samples_ index) and with
     // what weight, how far the path has come, and how many bounces it took.
@@ -205,22 +195,6 @@ class LaneTileRenderer : private SampleTracer {
     MaterialSettings material_;
     GroundSettings ground_;
 
-    // Cone marching (Amanatides 1984; as in demoscene "cone marching"): one cone per block of
-    // kConeBlock^2 pixels marched to where the set may be near, so that the pixels' own rays
-    // start there; blockStart_ gets that t, or infinity where the whole block misses.
-    static constexpr int kConeBlock = 4;
-    void marchCones(const Tile& tile, LaneTileStats& stats);
-    // One sample per pixel: the rays through the centres of row py of the tile, in rowRays_,
-    // for the pixels of the blocks whose start (blockStart_, the row's blocks) is finite.
-    void rowRays(const Tile& tile, int py, const double* blockStart);
-    // Several samples per pixel: sample k (samplePosition) of each pixel of row py, in rowRays_.
-    void sampleRowRays(const Tile& tile, int py, int k);
-    // The rays of rowRays_ (row py) that may meet the set, into rays_: from their block's start
-    // (blockStart, the row's blocks) to where they leave the bounding sphere.
-    void pushRowRays(const Tile& tile, int py, const double* blockStart);
-    // The camera rays of sample k of the tile's pixels, in rays_ (with rayPixel_, rayBlock_):
-    // none in the blocks whose cones missed.
-    void sampleRays(const Tile& tile, int k);
     // The rays of traced_ that ended on the set, into hits_ and hitPoints_.
     void collectHits(LaneTileStats& stats);
     // The hits' colours, in surfaces_ (red, green, blue), from their normals, shadow rays and
@@ -254,24 +228,7 @@ class LaneTileRenderer : private SampleTracer {
     const DeviationTracking* tracking_ = nullptr;
     double boundingRadius_;
     LightConstants lightConstants_;
-    // The cones' radius per unit of t, for every block of the image (coneRatio()).
-    static double coneRatio(const Camera& camera);
-    double coneRatio_;
 
-    RayBatch cones_;
-    std::vector<TraceResult> coneResults_;
-    std::vector<int> coneBlock_;
-    std::vector<double> blockStart_;
-    std::vector<Ray> coneCentres_;
-
-    // A row of the tile's rays (from the camera), and where each is inside the bounding sphere
-    // (tNear > tFar where it misses).
-    struct RowRay {
-        Point3d origin;  // the camera's position, or a point of its thin lens
-        Vector3d direction;
-        double tNear, tFar;
-    };
-    std::vector<RowRay> rowRays_;
     // The batches of the current sample of the tile.
     RayBatch rays_;
     std::vector<int> rayPixel_;  // which pixel of the tile each ray belongs to
