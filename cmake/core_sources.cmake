@@ -39,6 +39,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/render/lane_tile_renderer.cpp
   quaternia/render/shadow_rays.cpp
   quaternia/render/camera_rays.cpp
+  quaternia/render/ground_lighting.cpp
   quaternia/render/lanes/camera_lanes.cpp
   quaternia/render/lanes/shadow_lanes.cpp
   quaternia/render/lanes/point_lanes.cpp

@@ -12,6 +12,7 @@
 #include "quaternia/render/adaptive_sampling.h"
 #include "quaternia/render/camera.h"
 #include "quaternia/render/camera_rays.h"
+#include "quaternia/render/ground_lighting.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/march.h"
 #include "quaternia/render/optics.h"
@@ -155,42 +156,27 @@ class LaneTileRenderer : private SampleTracer {
         double t;
     };
     std::vector<GroundHit> groundHits_, cameraGround_;
-    // The points of the ground to light: where, the direction of the ray that met it, and the
-    // cone block of a camera ray's pixel (-1 for other rays).
-    struct GroundPoint {
-        Point3d x;
-        Vector3d direction;
-        int block;
-        // The side of the plane the ray came from.
-        Vector3d normal() const { return Vector3d(0, direction.y < 0 ? 1 : -1, 0); }
-    };
     std::vector<GroundPoint> groundPoints_;
     int blockOfPixel(int pixel) const;  // the cone block of pixel (of currentTile_)
-    // The ground's own light at groundPoints_, in groundColor_, with each light's shadow rays;
-    // the key light's visibility in groundKeyVisibility_ (1 where it is behind the plane).
+    // The ground's own light at groundPoints_ (ground_lighting.h), with each light's shadow
+    // rays.
+    GroundLighting groundLighting_;
     void lightGround(LaneTileStats& stats);
     // The ground hits of a wave (groundHits_), into their samples, their reflections queued.
     void shadeGround(LaneTileStats& stats);
     // The camera rays of cameraGround_, which see the ground and nothing else, into pixels.
     void shadeCameraGround(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
-    // Leaves out of shadows_ the ground's shadow rays of a directional light that a cone about
-    // each block's rays proves fully lit.
-    void clearLitGroundShadows(const LightSource& light, LaneTileStats& stats);
-    SurfaceBatch groundSurfaces_;
     // The lights of [light1] .. [light7] at the hits of hits_, added to surfaces_' colours.
     void lightOthers(LaneTileStats& stats);
     // Shadow-ray visibility of `light` from points (the rays of shadows_ as aimed by the
     // caller): marched in lanes.
     void marchShadowsOf(const LightSource& light, LaneTileStats& stats);
-    ShadowMarch shadowMarchOf(const LightSource& light) const;
     // Inside waves: per path, the fixed step index, the bracket of the exit, bisection rounds.
     PointBatch insidePoints_;
     std::vector<PointEstimate> insideEstimates_;
     std::vector<std::array<double, 2>> insideBracket_;
     std::vector<double> insideFar_, insideDistances_;
     std::vector<size_t> marchedPaths_, insideActive_;
-    std::vector<double> groundKeyVisibility_, groundOtherVisibility_;
-    std::vector<Color> groundColor_;
     std::vector<KeyLight> otherLights_;
     MaterialSettings material_;
     GroundSettings ground_;

@@ -435,18 +435,7 @@ void LaneTileRenderer::traceInsideWave(LaneTileStats& stats) {
 }
 
 void LaneTileRenderer::marchShadowsOf(const LightSource& light, LaneTileStats& stats) {
-    shadows_.march(lanes_, shadowMarchOf(light), stats.shading);
-}
-
-ShadowMarch LaneTileRenderer::shadowMarchOf(const LightSource& light) const {
-    ShadowMarch shadowMarch;
-    shadowMarch.minimumStep = shader_->shadowMinimumStep();
-    shadowMarch.softness = light.softness;
-    shadowMarch.soft = light.shadows == Shadows::Soft;
-    shadowMarch.maxSteps = Shader::kShadowSteps;
-    shadowMarch.relaxation = Shader::kShadowRelaxation;
-    shadowMarch.maxRelaxation = Shader::kShadowMaxRelaxation;
-    return shadowMarch;
+    shadows_.march(lanes_, shadowMarchOf(light, *shader_), stats.shading);
 }
 
 void LaneTileRenderer::lightOthers(LaneTileStats& stats) {
