@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Prints ms per frame and rays/s for fixed, named scenes: medians of several runs of the
 # quaternia binary (these machines are shared and noisy), then the Google Benchmark suite.
+# The tables also go to a results file, bench/results/run-DATE-ISA.md (bench/results/README.md),
+# headed by the machine, the lanes' instruction set, the date and the commit (bench/machine.py).
 # Usage: bench/run.sh [runs]   (build first: cmake --build build)
 #        rows=REGEX bench/run.sh [runs]   only the frame rows whose names match (no films, meshes
 #        or Google Benchmark suite), e.g. rows=algebra bench/run.sh 5; the materials' rows
@@ -12,6 +14,10 @@ binary=build/quaternia
 [ -x "$binary" ] || { echo "build first: cmake -S . -B build -G Ninja && cmake --build build" >&2; exit 2; }
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
+python3 bench/machine.py "$binary" run "bench/run.sh" "${rows:+rows='$rows' }bench/run.sh $runs" \
+  > "$out/head.md"
+report=$(head -n 1 "$out/head.md")
+{ tail -n +2 "$out/head.md"; echo '```text'; } > "$report"
 
 scene() {  # name, then quaternia render arguments; isa=avx2 scene ... caps the lanes (--isa)
   local name=$1; shift
@@ -40,6 +46,7 @@ print("%-28s %-10s %8.1f ms %6.1f fps %8.2f Mrays/s  %-7s lanes %3.0f%%  steps/r
 # shadows and ambient occlusion (the scene's defaults). Frame time is the render itself (the
 # "seconds" of --json), not the process start or the PNG encoding.
 one_spp=(--set render.samples=1)
+tables() {  # everything printed from here on, into the results file too
 echo "scene                        size         time     rate     speed    path    lanes   counters"
 scene default-1080p --width 1920 --height 1080 "${one_spp[@]}"
 # 16 samples per pixel, every one in every pixel and adaptively (render.adaptive: the rest of
@@ -132,7 +139,7 @@ for target in best avx2; do
   isa=$target paired "three-lights-1080p-$target" --set light1.enabled=true \
     --set light2.enabled=true --set light2.kind=directional
 done
-[ -n "${rows:-}" ] && exit 0
+[ -n "${rows:-}" ] && return 0
 # Films (`quaternia animate`): the hidden-turn preset at 1 sample on 2 threads, frames per second
 # end to end (every PNG written, the process start left out) and of the render loop alone (the
 # sum of the frames' render seconds); the ratio is how much of the render speed the film keeps
@@ -186,3 +193,7 @@ mesh 512
 if [ -x build/quaternia_bench ]; then
   build/quaternia_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 fi
+}
+tables | tee -a "$report"
+echo '```' >> "$report"
+echo "bench/run.sh: wrote $report" >&2

@@ -14,6 +14,7 @@
 #include "cmd/mesh_command.h"
 #include "cmd/orbit_command.h"
 #include "cmd/plane_command.h"
+#include "cmd/reference_command.h"
 #include "cmd/render_command.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/presets.h"
@@ -54,6 +55,8 @@ int main(int argc, char** argv) {
     addMeshCommand(app, meshOptions);
     ExploreCommandOptions exploreOptions;
     addExploreCommand(app, exploreOptions);
+    ReferenceCommandOptions referenceOptions;
+    addReferenceCommand(app, referenceOptions);
     if (auto code = parseCommandLine(app, argc, argv, "quaternia")) return *code;
     limitLaneTargets(isa);
     return runAtBoundary([&] {
@@ -64,6 +67,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("plane")) return runPlaneCommand(planeOptions);
         if (app.got_subcommand("mesh")) return runMeshCommand(meshOptions);
         if (app.got_subcommand("explore")) return runExploreCommand(exploreOptions);
+        if (app.got_subcommand("reference")) return runReferenceCommand(app, referenceOptions);
         return 0;
     });
 }

@@ -1,7 +1,9 @@
 // What a parameter takes, in words for people: its type and allowed values in messages and
-// comments (describeType, describeRange), and the whole table as --help lists it.
+// comments (describeType, describeRange), and the whole table as --help lists it and as
+// docs/parameters.md shows it (parameterReference).
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "quaternia/scene/parameter_text.h"
@@ -12,6 +14,8 @@ namespace quaternia {
 namespace {
 
 using parameter_text::interval;
+using parameter_text::markdownCell;
+using parameter_text::markdownCode;
 using parameter_text::quoted;
 using parameter_text::vectorLength;
 
@@ -64,6 +68,14 @@ std::string typeName(const Parameter& p) {
     }
     return "?";
 }
+
+// [light2] .. [light7] are built by [light1]'s function (parameter_table_scenery.cpp): the help
+// and the reference name their keys once.
+bool isRepeatedLight(const std::string& section) {
+    return section.size() > 5 && section.compare(0, 5, "light") == 0 && section != "light1";
+}
+
+const std::string kRepeatedLights = "[light2] .. [light" + std::to_string(kExtraLights) + "]";
 
 }  // namespace
 
@@ -140,17 +152,57 @@ std::string parameterHelp() {
         "fixed-step or z^3+c is taken as a string).\n";
     std::string section;
     for (const auto& p : parameterTable()) {
-        // [light2] .. [light7] are [light1] again: named once.
-        if (p.section.size() > 5 && p.section.substr(0, 5) == "light" && p.section != "light1") {
+        if (isRepeatedLight(p.section)) {
             if (p.section != section && p.section == "light2")
-                out += "\n[light2] .. [light" + std::to_string(kExtraLights) +
-                       "]\n  The same keys as [light1], for more lights.\n";
+                out += "\n" + kRepeatedLights + "\n  The same keys as [light1], for more lights.\n";
             section = p.section;
             continue;
         }
         if (p.section != section) out += "\n[" + (section = p.section) + "]\n";
         out += "  " + p.name() + " = " + formatValue(p.defaultValue) + "    (" + typeName(p) +
                ", " + describeRange(p) + ")\n      " + p.help + "\n";
+    }
+    return out;
+}
+
+std::string parameterReference() {
+    // The sections as headings, each linked from the list at the top: GitHub's anchor of
+    // "[fractal]" is "fractal", of "[light2] .. [light7]" "light2--light7".
+    std::vector<std::pair<std::string, std::string>> headings;  // link text, anchor
+    for (const std::string& section : parameterSections()) {
+        if (section == "light2")
+            headings.emplace_back("light2 .. light" + std::to_string(kExtraLights),
+                                  "light2--light" + std::to_string(kExtraLights));
+        else if (!isRepeatedLight(section))
+            headings.emplace_back(section, section);
+    }
+    std::string out =
+        "Every key of a scene, by section. Set them in a scene file as `key = value` under\n"
+        "`[section]`, or on the command line as `--set section.key=value`, the value in TOML "
+        "syntax\n(a bare word such as `fixed-step` or `z^3+c` is taken as a string). The file, "
+        "then `--preset`,\nthen each `--set` apply in that order; a value out of range is "
+        "refused with the key named.\n\nSections:";
+    for (std::size_t i = 0; i < headings.size(); ++i)
+        out += std::string(i == 0 ? " " : ", ") + "[" + headings[i].first + "](#" +
+               headings[i].second + ")";
+    out += ".\n";
+    const std::string tableHead =
+        "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
+    std::string section;
+    for (const auto& p : parameterTable()) {
+        if (isRepeatedLight(p.section)) {
+            if (p.section != section && p.section == "light2")
+                out += "\n## " + kRepeatedLights +
+                       "\n\nThe keys of [light1](#light1), with the same defaults, for more "
+                       "lights: `light2.enabled`, ... `light" +
+                       std::to_string(kExtraLights) + ".angular_radius`.\n";
+            section = p.section;
+            continue;
+        }
+        if (p.section != section) out += "\n## [" + (section = p.section) + "]\n\n" + tableHead;
+        out += "| " + markdownCode(p.name()) + " | " + markdownCell(typeName(p)) + " | " +
+               markdownCode(formatParameterValue(p, p.defaultValue)) + " | " +
+               markdownCell(describeRange(p)) + " | " + markdownCell(p.help) + " |\n";
     }
     return out;
 }

@@ -59,6 +59,34 @@ std::string interval(const Parameter& p) {
     return out;
 }
 
+std::string markdownCell(const std::string& text) {
+    std::string out;
+    bool inCode = false;
+    for (char ch : text) {
+        if (ch == '`') inCode = !inCode;
+        if (ch == '|') {
+            out += "\\|";
+        } else if (ch == '\n') {
+            out += ' ';
+        } else if (!inCode && (ch == '*' || ch == '\\')) {
+            out += '\\';
+            out += ch;
+        } else if (!inCode && ch == '<') {
+            out += "&lt;";
+        } else {
+            out += ch;
+        }
+    }
+    return out;
+}
+
+std::string markdownCode(const std::string& text) {
+    std::string out = "`";
+    for (char ch : text)
+        out += ch == '|' ? std::string("\\|") : std::string(1, ch);
+    return out + "`";
+}
+
 }  // namespace parameter_text
 
 std::string formatValue(const ParameterValue& value) {

@@ -125,4 +125,9 @@ std::string formatParameterValue(const Parameter& parameter, const ParameterValu
 // section: the text of `quaternia render --help`.
 std::string parameterHelp();
 
+// The same in Markdown, one table per section under a "## [section]" heading after a list of
+// links to them: the body of docs/parameters.md (`quaternia reference parameters`), generated so
+// that the page cannot fall behind the table.
+std::string parameterReference();
+
 }  // namespace quaternia

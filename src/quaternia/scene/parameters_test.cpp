@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "quaternia/algebra/test_helpers.h"
+#include "quaternia/scene/parameter_text.h"
 #include "quaternia/util/edit_distance.h"
 #include "quaternia/util/error.h"
 
@@ -424,6 +425,38 @@ TEST(ParameterHelp, ListsEveryKeyWithItsDefaultRangeAndHelp) {
     EXPECT_NE(help.find("render.method = \"sphere\"    (choice, \"sphere\" or \"fixed-step\")"),
               std::string::npos);
     EXPECT_NE(help.find("\n[shading]\n"), std::string::npos);
+}
+
+// docs/parameters.md (ctest's Docs.ParameterReferenceIsCurrent compares the committed file): a
+// row of every key, its default and range, under its section's heading, which the list at the
+// top links; [light2] .. [light7] named once, as in --help.
+TEST(ParameterReference, HasARowOfEveryKeyUnderItsSection) {
+    const std::string reference = parameterReference();
+    for (const auto& p : parameterTable()) {
+        SCOPED_TRACE(p.name());
+        if (p.section.rfind("light", 0) == 0 && p.section != "light1") {
+            EXPECT_EQ(reference.find("| `" + p.name() + "` |"), std::string::npos);
+            continue;
+        }
+        const std::size_t row = reference.find("| `" + p.name() + "` | ");
+        ASSERT_NE(row, std::string::npos);
+        EXPECT_LT(reference.rfind("\n## [" + p.section + "]\n", row), row);
+        EXPECT_NE(reference.find("[" + p.section + "](#" + p.section + ")"), std::string::npos);
+    }
+    EXPECT_NE(reference.find("| `render.width` | integer | `1280` | [1, 16384] | "),
+              std::string::npos);
+    EXPECT_NE(reference.find("\n## [light2] .. [light7]\n"), std::string::npos);
+    EXPECT_NE(reference.find("[light2 .. light7](#light2--light7)"), std::string::npos);
+}
+
+// A table cell ends at '|', even in a code span, and "i*z*j*z" outside one would turn italic.
+TEST(ParameterReference, EscapesWhatWouldBreakATableCell) {
+    EXPECT_EQ(parameter_text::markdownCell("|z| > 2, i*z*j*z, z <- p(z), `a*b|c`"),
+              "\\|z\\| > 2, i\\*z\\*j\\*z, z &lt;- p(z), `a*b\\|c`");
+    EXPECT_EQ(parameter_text::markdownCode("\"a|b\""), "`\"a\\|b\"`");
+    const std::string reference = parameterReference();
+    EXPECT_NE(reference.find("A point escapes once \\|z\\| > bailout"), std::string::npos);
+    EXPECT_NE(reference.find("\"i\\*z\\*j\\*z + c\""), std::string::npos);
 }
 
 // ---- Issue 16: the algebra, c of 4 or 8 components, the slice of the 8-component algebras ----

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "quaternia/scene/parameter_text.h"
 #include "quaternia/util/edit_distance.h"
 #include "quaternia/util/error.h"
 
@@ -126,6 +127,22 @@ std::string presetHelp() {
     for (const Preset& preset : scenePresets())
         out += "  " + preset.name + std::string(width + 2 - preset.name.size(), ' ') +
                preset.description + "\n";
+    return out;
+}
+
+std::string presetReference() {
+    std::string out =
+        "\n## Presets\n\n`--preset NAME` (every command that reads a scene, and the explorer's "
+        "buttons)\nsets these keys after the scene file and before each `--set`; every other key "
+        "keeps its value.\n\n| preset | what | keys it sets |\n|---|---|---|\n";
+    for (const Preset& preset : scenePresets()) {
+        std::string keys;
+        for (const auto& [key, value] : preset.values)
+            keys += (keys.empty() ? "" : ", ") +
+                    parameter_text::markdownCode(key + " = " + formatValue(value));
+        out += "| `" + preset.name + "` | " + parameter_text::markdownCell(preset.description) +
+               " | " + keys + " |\n";
+    }
     return out;
 }
 

@@ -35,4 +35,8 @@ std::string presetNames();
 // One line per preset, "  name  description", under a heading: the presets part of --help.
 std::string presetHelp();
 
+// The presets as a Markdown section ("## Presets"): each name, its line and the keys it sets, for
+// docs/parameters.md (`quaternia reference parameters`).
+std::string presetReference();
+
 }  // namespace quaternia

@@ -78,5 +78,20 @@ TEST(Presets, HelpListsEveryNameWithItsDescription) {
     EXPECT_NE(help.find("  rabbit       Douady's rabbit"), std::string::npos) << help;
 }
 
+// docs/parameters.md's presets: a row of each, with its line and every key it sets.
+TEST(PresetReference, HasARowOfEveryPresetWithTheKeysItSets) {
+    const std::string reference = presetReference();
+    EXPECT_EQ(reference.rfind("\n## Presets\n", 0), 0u);
+    for (const Preset& preset : scenePresets()) {
+        SCOPED_TRACE(preset.name);
+        const std::size_t row = reference.find("| `" + preset.name + "` | ");
+        ASSERT_NE(row, std::string::npos);
+        const std::string line = reference.substr(row, reference.find('\n', row) - row);
+        for (const auto& [key, value] : preset.values)
+            EXPECT_NE(line.find("`" + key + " = " + formatValue(value) + "`"), std::string::npos);
+    }
+    EXPECT_NE(reference.find("`fractal.c = [-1.0, 0.0, 0.0, 0.0]`"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace quaternia
