@@ -2,8 +2,8 @@
 """Fails when a source file includes from a layer above its own.
 
 Each folder of the library is a layer and may include only from itself and the folders named
-for it below (README.md, "How it works", draws the same map). Tests count as part of the
-folder they sit in. Prints each offending include as FILE:LINE: FOLDER may not include TARGET.
+for it below (docs/architecture.md, "The layers", and the README draw the same map). Tests
+count as part of the folder they sit in. Prints each offending include as FILE:LINE: FOLDER may not include TARGET.
 """
 import pathlib
 import re

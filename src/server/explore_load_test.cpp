@@ -2,7 +2,7 @@
 // (bad keys and values, traversal paths, oversized images, junk that is not HTTP), all answered
 // within a bound, after which the server still answers. Every reply counted is checked: each
 // render is the library's PNG of its view, each refusal its status and the key it names. The
-// timings are printed for the README.
+// timings are printed for docs/benchmarks.md, The explorer.
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>

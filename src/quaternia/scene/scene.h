@@ -49,7 +49,8 @@ struct RenderSettings {
     int samples = 0;  // per pixel, stratified
     // With samples > 1: every pixel's first sample, then the rest only where the first samples
     // of the pixel and its neighbours disagree (render/adaptive_sampling.h); false: all of them.
-    // Off by default until it meets issue 17's bounds on every reference scene (README).
+    // Off by default until it meets issue 17's bounds on every reference scene
+    // (docs/benchmarks.md, Adaptive anti-aliasing).
     bool adaptive = false;
     MarchMethod method = MarchMethod::SphereTracing;
     double step = 0;        // fixed-step delta (Algorithm 2), world units
