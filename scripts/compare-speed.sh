@@ -7,6 +7,7 @@
 # each build (the render's own "seconds" of --json) and the median of the pairs' ratios.
 #   scripts/compare-speed.sh BEFORE/quaternia AFTER/quaternia [RUNS [ISA...]]
 #                                                  (default: 7 runs, avx2 best)
+#   rows=REGEX scripts/compare-speed.sh ...        only the rows whose names match
 set -euo pipefail
 before=${1:?usage: scripts/compare-speed.sh BEFORE AFTER [RUNS [ISA...]]}
 after=${2:?usage: scripts/compare-speed.sh BEFORE AFTER [RUNS [ISA...]]}
@@ -21,7 +22,7 @@ trap 'rm -rf "$work"' EXIT
 frame=(--width 1920 --height 1080 --set render.samples=1)
 # name|quaternia render arguments (before the frame's size and samples: --set takes all the
 # values that follow it)
-rows=(
+scenes=(
   "default|"
   "case01|$root/bench/scenes/case01_sqr_A_shaded.toml"
   "studio|--preset studio"
@@ -39,8 +40,9 @@ seconds() {  # binary isa arguments...: the render's seconds
 
 printf '%-10s %-6s %10s %10s %8s\n' row isa before_ms after_ms ratio
 for isa in "${isas[@]}"; do
-  for entry in "${rows[@]}"; do
+  for entry in "${scenes[@]}"; do
     IFS='|' read -r name arguments <<<"$entry"
+    if [ -n "${rows:-}" ] && ! [[ $name =~ $rows ]]; then continue; fi
     eval "args=($arguments)"
     : >"$work/pairs"
     for run in $(seq "$runs"); do
