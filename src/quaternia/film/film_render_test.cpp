@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "quaternia/film/film_test_support.h"
 #include "quaternia/image/png_io.h"
 #include "quaternia/render/render_png.h"
 #include "quaternia/scene/animation.h"
@@ -23,23 +24,11 @@ namespace quaternia {
 namespace {
 
 namespace fs = std::filesystem;
+using film_test::namesIn;
 
 // A fresh directory for one test, removed after it.
-class ScratchDirectory {
-  public:
-    ScratchDirectory() {
-        path_ = fs::temp_directory_path() /
-                ("quaternia_film_" +
-                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                 "_" + std::to_string(::getpid()));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~ScratchDirectory() { fs::remove_all(path_); }
-    const fs::path& path() const { return path_; }
-
-  private:
-    fs::path path_;
+struct ScratchDirectory : film_test::ScratchDirectory {
+    ScratchDirectory() : film_test::ScratchDirectory("film") {}
 };
 
 std::vector<uint8_t> fileBytes(const std::string& path) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "quaternia/film/film_test_support.h"
 #include "quaternia/scene/animation.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_file.h"
@@ -19,35 +20,15 @@ namespace quaternia {
 namespace {
 
 namespace fs = std::filesystem;
+using film_test::namesIn;
 
 // A fresh directory for one test, removed after it.
-class ScratchDirectory {
-  public:
-    ScratchDirectory() {
-        path_ = fs::temp_directory_path() /
-                ("quaternia_frame_plan_" +
-                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                 "_" + std::to_string(::getpid()));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~ScratchDirectory() { fs::remove_all(path_); }
-    const fs::path& path() const { return path_; }
-
-  private:
-    fs::path path_;
+struct ScratchDirectory : film_test::ScratchDirectory {
+    ScratchDirectory() : film_test::ScratchDirectory("frame_plan") {}
 };
 
 void touch(const fs::path& path) {
     std::ofstream(path) << "x";
-}
-
-std::vector<std::string> namesIn(const fs::path& directory) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(directory))
-        names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
 }
 
 TEST(FramePlan, FrameNamesHaveSixDigitsOrAsManyAsTheFilmNeeds) {

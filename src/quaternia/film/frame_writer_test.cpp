@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "quaternia/film/film_test_support.h"
 #include "quaternia/render/render_png.h"
 #include "quaternia/scene/test_scenes.h"
 #include "quaternia/util/error.h"
@@ -22,32 +23,12 @@ namespace quaternia {
 namespace {
 
 namespace fs = std::filesystem;
+using film_test::namesIn;
 
 // A fresh directory for one test, removed after it.
-class ScratchDirectory {
-  public:
-    ScratchDirectory() {
-        path_ = fs::temp_directory_path() /
-                ("quaternia_frame_writer_" +
-                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                 "_" + std::to_string(::getpid()));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~ScratchDirectory() { fs::remove_all(path_); }
-    const fs::path& path() const { return path_; }
-
-  private:
-    fs::path path_;
+struct ScratchDirectory : film_test::ScratchDirectory {
+    ScratchDirectory() : film_test::ScratchDirectory("frame_writer") {}
 };
-
-std::vector<std::string> namesIn(const fs::path& directory) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(directory))
-        names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 std::vector<uint8_t> fileBytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);

@@ -12,38 +12,19 @@
 #include <string>
 #include <vector>
 
+#include "quaternia/film/film_test_support.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
 namespace {
 
 namespace fs = std::filesystem;
+using film_test::namesIn;
 
 // A fresh directory for one test, removed after it.
-class ScratchDirectory {
-  public:
-    ScratchDirectory() {
-        path_ = fs::temp_directory_path() /
-                ("quaternia_video_" +
-                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                 "_" + std::to_string(::getpid()));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~ScratchDirectory() { fs::remove_all(path_); }
-    const fs::path& path() const { return path_; }
-
-  private:
-    fs::path path_;
+struct ScratchDirectory : film_test::ScratchDirectory {
+    ScratchDirectory() : film_test::ScratchDirectory("video") {}
 };
-
-std::vector<std::string> namesIn(const fs::path& directory) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(directory))
-        names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 std::optional<std::string> ffmpegOnPath() {
     try {
