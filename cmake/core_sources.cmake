@@ -34,8 +34,10 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/render/adaptive_sampling.cpp
   quaternia/render/adaptive_driver.cpp
   quaternia/render/lane_tile_adaptive.cpp
-  quaternia/render/lane_tile_scenery.cpp
-  quaternia/render/lane_tile_ground.cpp
+  quaternia/render/path_waves.cpp
+  quaternia/render/path_surfaces.cpp
+  quaternia/render/scalar_waves.cpp
+  quaternia/render/lane_tile_waves.cpp
   quaternia/render/lane_tile_renderer.cpp
   quaternia/render/shadow_rays.cpp
   quaternia/render/camera_rays.cpp

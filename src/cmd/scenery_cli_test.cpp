@@ -36,10 +36,20 @@ TEST_F(SceneryCli, OutOfRangeMaterialsAndLightsAreOneLine) {
     expectUserError(run("render --set light1.kind=laser -o " + output("out.png")), "light1.kind");
 }
 
-TEST_F(SceneryCli, ScalarEngineRefusesPathsInOneLine) {
+// The double-precision engine draws the looks too (path_waves.h), and with them the algebras the
+// lanes leave to it: a coquaternion set on a reflecting ground.
+TEST_F(SceneryCli, ScalarEngineRendersTheLooks) {
+    for (const char* look : {"studio", "chrome", "glass"}) {
+        const CommandResult r =
+            run(std::string("render --preset ") + look +
+                " --set render.engine=scalar --width 32 --height 24 -o " + output("look.png"));
+        EXPECT_EQ(r.exitCode, 0) << look << ": " << r.err;
+    }
     const CommandResult r =
-        run("render --set render.engine=scalar --set ground.enabled=true -o " + output("out.png"));
-    expectUserError(r, "ground.enabled needs the simd engine");
+        run("render --set fractal.algebra=coquaternion --set ground.enabled=true "
+            "--set ground.reflectivity=0.3 --width 24 --height 16 -o " +
+            output("coquaternion.png"));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
 }
 
 }  // namespace

@@ -30,6 +30,10 @@ struct DeviationTracking {
     }
 };
 
+// Rays a tracer gathers from rounds into one batch: about a tile's pixels (as a uniform sample of
+// a 64-pixel tile holds), so that the batches stay in cache.
+inline constexpr size_t kRefinementBatch = 4096;
+
 class SampleTracer {
   public:
     virtual ~SampleTracer() = default;

@@ -34,7 +34,7 @@ struct PixelSamples {
     // Of the hit samples, for the passes (RenderOptions::passes): world normals and orbit traps.
     Vector3d normalSum = Vector3d();
     double trapSum = 0;
-    // The scene around the set (lane_tile_scenery.cpp): hits whose alpha is below 1 (a shadow
+    // The scene around the set (path_waves.h): hits whose alpha is below 1 (a shadow
     // catcher's, a glow's over the background) leave 1 - alpha each here, and the hits of the
     // ground are counted apart (its object id).
     // Samples that hit nothing but carry a glow are hits of no object (layerHits).

@@ -7,19 +7,10 @@
 #include <vector>
 
 #include "quaternia/render/lanes/shading_lanes.h"
+#include "quaternia/render/path_waves.h"
 #include "quaternia/render/shadow_rays.h"
 
 namespace quaternia {
-
-// A point of the ground to light: where, the direction of the ray that met it, and the cone
-// block of a camera ray's pixel (-1 for other rays).
-struct GroundPoint {
-    Point3d x;
-    Vector3d direction;
-    int block;
-    // The side of the plane the ray came from.
-    Vector3d normal() const { return Vector3d(0, direction.y < 0 ? 1 : -1, 0); }
-};
 
 // The shadow march of a light's rays (soft or hard, its sharpness).
 ShadowMarch shadowMarchOf(const LightSource& light, const Shader& shader);

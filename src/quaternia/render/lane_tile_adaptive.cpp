@@ -8,14 +8,6 @@
 
 namespace quaternia {
 
-namespace {
-
-// Rays in one batch of the rest of the samples: about a tile's pixels (as a uniform sample of
-// a 64-pixel tile holds), so that the batches stay in cache.
-constexpr size_t kRefinementBatch = 4096;
-
-}  // namespace
-
 void LaneTileRenderer::renderAdaptive(const Tile& tile, std::vector<PixelSamples>& pixels,
                                       LaneTileStats& stats) {
     adaptiveStats_ = &stats;
@@ -79,8 +71,10 @@ void LaneTileRenderer::clearRays() {
 }
 
 void LaneTileRenderer::traceInto(std::vector<PixelSamples>& pixels, LaneTileStats& stats) {
-    if (scenery_) {
-        tracePaths(pixels, stats);
+    if (paths_.active()) {
+        waveStats_ = &stats;
+        paths_.trace(*this, currentTile_, sampleKey_, cameraRayTargets(), pixels, tracking_);
+        waveStats_ = nullptr;
         return;
     }
     if (rays_.size() == 0) return;
@@ -89,7 +83,7 @@ void LaneTileRenderer::traceInto(std::vector<PixelSamples>& pixels, LaneTileStat
     if (hits_.empty()) return;
     shadeHits(stats);
     for (size_t h = 0; h < hits_.size(); ++h) {
-        PixelSamples& pixel = pixels[size_t(hits_[h].pixel)];
+        PixelSamples& pixel = pixels[size_t(hits_[h].owner)];
         const Color sample = shader_->throughFog(
             Color(surfaces_.red[h], surfaces_.green[h], surfaces_.blue[h]), hits_[h].t);
         pixel.sum += sample;
@@ -99,7 +93,7 @@ void LaneTileRenderer::traceInto(std::vector<PixelSamples>& pixels, LaneTileStat
             pixel.normalSum += normals_[h];
             pixel.trapSum += hitEstimates_[h].trap;
         }
-        if (tracking_) tracking_->add(hits_[h].pixel, sample, *shader_);
+        if (tracking_) tracking_->add(hits_[h].owner, sample, *shader_);
     }
 }
 

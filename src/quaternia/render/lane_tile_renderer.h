@@ -15,7 +15,7 @@
 #include "quaternia/render/ground_lighting.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/march.h"
-#include "quaternia/render/optics.h"
+#include "quaternia/render/path_waves.h"
 #include "quaternia/render/sample_pattern.h"
 #include "quaternia/render/shade.h"
 #include "quaternia/render/shadow_rays.h"
@@ -31,7 +31,7 @@ struct LaneTileStats {
 };
 
 // One per thread: owns the batches, so that after the first tiles nothing is allocated.
-class LaneTileRenderer : private SampleTracer {
+class LaneTileRenderer : private SampleTracer, private WaveEngine {
   public:
     // shadowCylinders: hard shadow rays are shortened by a cylinder per block (clipShadowRays),
     // which changes no pixel; false only to check that. adaptive: adaptive sampling
@@ -45,12 +45,17 @@ class LaneTileRenderer : private SampleTracer {
     void rebind(const LaneFractal& lanes, const Camera& camera, const Shader& shader,
                 const MarchSettings& march, int samples, bool adaptive = false);
     // Whether the pixels also sum their hits' normals and orbit traps (RenderOptions::passes).
-    void setPasses(bool passes) { passes_ = passes; }
-    // The set's material and the ground (lane_tile_scenery.cpp); call after rebind too.
-    void setScenery(const MaterialSettings& material, const GroundSettings& ground);
+    void setPasses(bool passes) {
+        passes_ = passes;
+        paths_.setPasses(passes);
+    }
+    // The set's material and the ground (path_waves.h); call after rebind too.
+    void setScenery(const MaterialSettings& material, const GroundSettings& ground) {
+        paths_.bind(*shader_, *camera_, boundingRadius_, material, ground);
+    }
     // Whether camera rays that see only a ground that reflects nothing end there without the
-    // paths (shadeCameraGround), which changes no pixel; false only to check that.
-    void setGroundShortcut(bool shortcut) { groundShortcut_ = shortcut; }
+    // paths (PathWaves::setGroundShortcut), which changes no pixel; false only to check that.
+    void setGroundShortcut(bool shortcut) { paths_.setGroundShortcut(shortcut); }
     // Uniform sampling's sample k of the `samples` alone in every pixel (RenderOptions::
     // onlySample); -1: every sample (or adaptive sampling where asked for).
     void setOnlySample(int k) { onlySample_ = k; }
@@ -77,109 +82,45 @@ class LaneTileRenderer : private SampleTracer {
     // rays that skip the set still count (bypassing_), bypass_.
     CameraRays cameraRays_;
     CameraRayBatch cameraRayTargets() {
-        return {rays_, rayPixel_, rayBlock_, bypassing_ ? &bypass_ : nullptr};
+        return {rays_, rayPixel_, rayBlock_, paths_.bypassing() ? &bypass_ : nullptr};
     }
     static constexpr int kConeBlock = CameraRays::kConeBlock;
-    // Marches and shades rays_ and adds each hit to pixels[rayPixel_].
+    // Marches and shades rays_ and adds each hit to pixels[rayPixel_] (with the paths where the
+    // scene has them).
     void traceInto(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
+    int sampleKey_ = -1;  // the sample index k of renderUniform's pass (-1: per pixel's count)
+    Tile currentTile_{};  // the tile being rendered
 
-    // ---- The scene around the set (lane_tile_scenery.cpp) ----
-    // Whether traceInto follows whole paths: reflection, refraction, the ground, glow. With the
-    // ground, the camera rays that skip the set (their cone or the bounding sphere missed) go
-    // to bypass_.
-    bool scenery_ = false;
+    // ---- The scene around the set: the paths (path_waves.h), with this renderer as their
+    // engine (lane_tile_waves.cpp) ----
+    PathWaves paths_;
+    std::vector<BypassRay> bypass_;
     // Whether hits_ are those of reflected or refracted rays: lit without ambient occlusion
     // (a reflection's creases cost as much as the camera's and show far less).
     bool secondaryWave_ = false;
     bool occlusion() const { return shader_->occlusionEnabled() && !secondaryWave_; }
-    bool bypassing_ = false;  // the ground or the glow: rays that skip the set still count
-    bool groundShortcut_ = true;
-    std::vector<BypassRay> bypass_;
-    // A ray of a path: where it goes, which camera sample it serves (samples_ index) and with
-    // what weight, how far the path has come, and how many bounces it took.
-    struct PathRay {
-        Ray ray;
-        double tNear = 0;  // camera rays: their cone's start
-        int sample = 0;
-        Color weight;
-        double travelled = 0;
-        int depth = 0;
-        bool camera = false;
-        int block = -1;
-    };
-    // A camera sample's result: colour (premultiplied) and alpha, its first hit (depth,
-    // normal, trap) and what it hit.
-    struct SampleResult {
-        int pixel = 0;
-        Color color;
-        double alpha = 0, depth = 0, trap = 0;
-        Vector3d normal;
-        uint8_t object = 0;  // 0 nothing, 1 the set, 2 the ground
-        int key = 0;         // the pixel's sample index, for glossy directions
-        double glow = 0;     // the glow's opacity in front of it
-    };
-    std::vector<SampleResult> sampleResults_;
-    std::vector<PathRay> outside_, inside_, nextOutside_, nextInside_;
-    int sampleKey_ = -1;  // the sample index k of renderUniform's pass (-1: per pixel's count)
-    Tile currentTile_{};  // the tile being rendered
-    // traceInto with paths: camera rays, then their reflections and refractions, wave by wave.
-    void tracePaths(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
-    // One wave of rays outside the set: marched, then shaded where they hit the set or the
-    // ground, their children queued.
-    // cameraBatch: the first wave, its camera rays still in rays_ as pushRowRays left them
-    // (without the glow, which marches them from farther out).
-    void traceOutsideWave(LaneTileStats& stats, bool cameraBatch);
-    // The first wave's batch: rays_ kept, cut at the ground (those it hides the set from into
-    // groundHits_), marchedPaths_ set; returns how many paths of outside_ it took.
-    size_t keepCameraBatch();
-    std::vector<uint8_t> groundHidden_;
-    // The hits_ of an outside wave, shaded (shadeHits), into their samples, and their
-    // reflected and refracted rays queued.
-    void shadeSetHits();
-
-    // One wave of refracted rays inside the set: fixed steps to where they leave it.
-    void traceInsideWave(LaneTileStats& stats);
-    // What a ray that hits neither the set nor (usable) ground sees: the background.
-    void seeBackground(const PathRay& path);
-    // Queues a child ray of `parent` (or, past the depth or below the weight worth a ray, adds
-    // the background along it to its sample).
-    void spawn(const PathRay& parent, const Ray& ray, const Color& weight, double travelled,
-               bool inside);
-    // The ground: where ray meets the plane (infinity where not ahead).
-    double groundDistance(const Ray& ray) const;
-    // A sample's result added to its pixel's sums (and, while tracking_, its deviation).
-    void addSample(std::vector<PixelSamples>& pixels, const SampleResult& sample);
-    // Where a ray meets the ground: outside_[path] (groundHits_) or bypass_[path]
-    // (cameraGround_), at t along it.
-    struct GroundHit {
-        size_t path;
-        double t;
-    };
-    std::vector<GroundHit> groundHits_, cameraGround_;
-    std::vector<GroundPoint> groundPoints_;
-    int blockOfPixel(int pixel) const;  // the cone block of pixel (of currentTile_)
-    // The ground's own light at groundPoints_ (ground_lighting.h), with each light's shadow
+    void marchWave(const RayBatch& rays, bool closest, std::vector<TraceResult>& traced) override;
+    void shadeWave(const std::vector<WaveHit>& hits, const HitShading& how) override;
+    const std::vector<Vector3d>& normals() const override { return normals_; }
+    Color colour(size_t hit) const override {
+        return Color(surfaces_.red[hit], surfaces_.green[hit], surfaces_.blue[hit]);
+    }
+    double trap(size_t hit) const override { return hitEstimates_[hit].trap; }
+    void outsideDistances(const PointBatch& points, std::vector<double>& distances) override;
+    void outwardNormals(const PointBatch& points, std::vector<Vector3d>& normals) override;
+    void lightGround(const std::vector<GroundPoint>& points, bool firstWave) override;
+    const std::vector<Color>& groundColour() const override { return groundLighting_.colour(); }
+    const std::vector<double>& groundKeyVisibility() const override {
+        return groundLighting_.keyVisibility();
+    }
+    LaneTileStats* waveStats_ = nullptr;  // the batch's, while the paths run
+    // The ground's own light at ground points (ground_lighting.h), with each light's shadow
     // rays.
     GroundLighting groundLighting_;
-    void lightGround(LaneTileStats& stats);
-    // The ground hits of a wave (groundHits_), into their samples, their reflections queued.
-    void shadeGround(LaneTileStats& stats);
-    // The camera rays of cameraGround_, which see the ground and nothing else, into pixels.
-    void shadeCameraGround(std::vector<PixelSamples>& pixels, LaneTileStats& stats);
     // The lights of [light1] .. [light7] at the hits of hits_, added to surfaces_' colours.
     void lightOthers(LaneTileStats& stats);
-    // Shadow-ray visibility of `light` from points (the rays of shadows_ as aimed by the
-    // caller): marched in lanes.
-    void marchShadowsOf(const LightSource& light, LaneTileStats& stats);
-    // Inside waves: per path, the fixed step index, the bracket of the exit, bisection rounds.
-    PointBatch insidePoints_;
-    std::vector<PointEstimate> insideEstimates_;
-    std::vector<std::array<double, 2>> insideBracket_;
-    std::vector<double> insideFar_, insideDistances_;
-    std::vector<size_t> marchedPaths_, insideActive_;
     std::vector<KeyLight> otherLights_;
-    MaterialSettings material_;
-    GroundSettings ground_;
+    std::vector<PointEstimate> exitEstimates_;  // outwardNormals'
 
     // The rays of traced_ that ended on the set, into hits_ and hitPoints_.
     void collectHits(LaneTileStats& stats);
@@ -220,13 +161,7 @@ class LaneTileRenderer : private SampleTracer {
     std::vector<int> rayPixel_;  // which pixel of the tile each ray belongs to
     std::vector<int> rayBlock_;  // and which of its cone blocks
     std::vector<TraceResult> traced_;
-    struct HitRecord {
-        int pixel, block;
-        double t;
-        Vector3d direction;
-        Point3d outside;
-    };
-    std::vector<HitRecord> hits_;
+    std::vector<WaveHit> hits_;  // owner: the pixel, or the path
     PointBatch hitPoints_;
     std::vector<PointEstimate> hitEstimates_;
     std::vector<int> gradientIterations_;

@@ -6,6 +6,29 @@
 namespace quaternia {
 
 MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
+    auto interval = intersectSphere(ray, fractal.boundingRadius());
+    return interval ? sphereTrace(fractal, ray, settings, *interval) : MarchResult();
+}
+
+MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
+    auto interval = intersectSphere(ray, fractal.boundingRadius());
+    return interval ? fixedStepMarch(fractal, ray, settings, *interval) : MarchResult();
+}
+
+MarchResult march(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
+    return settings.method == MarchMethod::FixedStep ? fixedStepMarch(fractal, ray, settings)
+                                                     : sphereTrace(fractal, ray, settings);
+}
+
+MarchResult march(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
+                  const RayInterval& interval) {
+    return settings.method == MarchMethod::FixedStep
+               ? fixedStepMarch(fractal, ray, settings, interval)
+               : sphereTrace(fractal, ray, settings, interval);
+}
+
+MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
+                        const RayInterval& interval) {
     // Steps are over-relaxed (settings.relaxation, relaxedMarchStep in march.h) and checked
     // against the plain step.
     // Once the estimate is below epsilon the ray is within about two epsilons of K_N (the
@@ -15,19 +38,18 @@ MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSetti
     // the estimate grows past epsilon again (a near miss: march on), or kMarchConfirmBudget steps
     // pass (a grazing ray: take the offset surface after all).
     MarchResult result;
-    auto interval = intersectSphere(ray, fractal.boundingRadius());
-    if (!interval) return result;
-    double t = interval->tNear;
+    double t = interval.tNear;
     double tOutside = t;
     double radius = 0;       // the estimate at tOutside
     double plainStep = 0;    // the plain step from tOutside
     double relaxedStep = 0;  // the step taken from tOutside where it was longer, else 0
     int confirming = 0;
-    while (t <= interval->tFar && result.steps < settings.maxSteps) {
+    while (t <= interval.tFar && result.steps < settings.maxSteps) {
         Point3d p = ray.at(t);
         DistanceEstimate e = fractal.estimate(p);
         ++result.steps;
         result.iterations += e.iterations;
+        result.closest = std::min(result.closest, e.distance);
         if (relaxedStep > plainStep + e.distance) {
             // This ball does not reach back to the plain step's end: take the plain step.
             t = tOutside + plainStep;
@@ -36,21 +58,21 @@ MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSetti
         }
         if (e.inside) {
             Point3d outside = ray.at(tOutside);
-            result.hit = Hit{t, p, outside, fractal.estimate(outside)};
+            result.hit = Hit{t, p, outside, fractal.estimate(outside), tOutside};
             return result;
         }
         double footprint = settings.pixelAngle * t;
         if (e.distance >= settings.epsilon * footprint) {
             confirming = 0;
         } else if (++confirming > kMarchConfirmBudget) {
-            result.hit = Hit{t, p, p, e};
+            result.hit = Hit{t, p, p, e, t};
             return result;
         }
         const double plain =
             confirming ? std::max(e.distance, kMarchConfirmStep * footprint) : e.distance;
         const double relaxed =
             relaxedMarchStep(settings.relaxation, t, tOutside, radius, e.distance);
-        relaxedStep = relaxed > plain && relaxed + t <= interval->tFar ? relaxed : 0;
+        relaxedStep = relaxed > plain && relaxed + t <= interval.tFar ? relaxed : 0;
         tOutside = t;
         radius = e.distance;
         plainStep = plain;
@@ -59,22 +81,22 @@ MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSetti
     return result;
 }
 
-MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
+MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
+                           const RayInterval& interval) {
     MarchResult result;
-    auto interval = intersectSphere(ray, fractal.boundingRadius());
-    if (!interval) return result;
-    double tOutside = interval->tNear;
+    double tOutside = interval.tNear;
     // Where the fractal's distance is a proven lower bound (DistanceKind::kLipschitz), a sample
     // outside skips ahead by that distance when it exceeds the step: nothing lies within it.
     const bool skip = fractal.distanceKind() == DistanceKind::kLipschitz;
-    for (double t = interval->tNear, advance = settings.step;
-         t <= interval->tFar && result.steps < settings.maxSteps; t += advance) {
+    for (double t = interval.tNear, advance = settings.step;
+         t <= interval.tFar && result.steps < settings.maxSteps; t += advance) {
         ++result.steps;
         bool inside;
         if (skip) {
             const DistanceEstimate e = fractal.estimate(ray.at(t));
             result.iterations += e.iterations;
             inside = e.inside;
+            result.closest = std::min(result.closest, e.distance);
             advance = std::max(settings.step, e.distance);
         } else {
             inside = fractal.contains(ray.at(t));
@@ -92,15 +114,10 @@ MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSe
             (fractal.contains(ray.at(middle)) ? tInside : tOutside) = middle;
         }
         Point3d outside = ray.at(tOutside);
-        result.hit = Hit{tInside, ray.at(tInside), outside, fractal.estimate(outside)};
+        result.hit = Hit{tInside, ray.at(tInside), outside, fractal.estimate(outside), tOutside};
         return result;
     }
     return result;
-}
-
-MarchResult march(const Fractal& fractal, const Ray& ray, const MarchSettings& settings) {
-    return settings.method == MarchMethod::FixedStep ? fixedStepMarch(fractal, ray, settings)
-                                                     : sphereTrace(fractal, ray, settings);
 }
 
 }  // namespace quaternia

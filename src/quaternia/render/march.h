@@ -73,17 +73,30 @@ struct Hit {
     // potential is defined and normals are taken.
     Point3d outside;
     DistanceEstimate estimate;
+    double tOutside = 0;  // where `outside` lies along the ray
 };
 
 struct MarchResult {
     std::optional<Hit> hit;
     int steps = 0;           // distance estimates or membership tests
     int64_t iterations = 0;  // polynomial evaluations
+    // The least distance estimate met on the way, at most 1 (the glow's; Lipschitz bounds where
+    // the fixed steps take them, else 1).
+    double closest = 1;
 };
 
+// The ray from where it enters the set's bounding sphere to where it leaves it.
 MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
 MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
 // The method named in the settings.
 MarchResult march(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
+// The same over the part `interval` of the ray (the paths' rays: cut short by the ground, or
+// started where a path has come to, path_waves.h).
+MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
+                        const RayInterval& interval);
+MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
+                           const RayInterval& interval);
+MarchResult march(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
+                  const RayInterval& interval);
 
 }  // namespace quaternia

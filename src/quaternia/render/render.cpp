@@ -19,6 +19,7 @@
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/march.h"
 #include "quaternia/render/sample_pattern.h"
+#include "quaternia/render/scalar_waves.h"
 #include "quaternia/render/shade.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_fractal.h"
@@ -187,6 +188,7 @@ class FrameRenderer {
     const Shader shader_;
     const MaterialSettings material_;
     const GroundSettings ground_;
+    const bool paths_;  // the scene has reflection, refraction, the ground or the glow
     const MarchSettings march_;
     const int samples_;
     const bool adaptive_;   // adaptive sampling (adaptive_sampling.h): render.adaptive, samples > 1
@@ -214,6 +216,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
       shader_(scene.shading, fractal_, scene.lights),
       material_(scene.material),
       ground_(scene.ground),
+      paths_(PathWaves::neededFor(scene.material, scene.ground, scene.shading.glowIntensity)),
       march_{fractal_.distanceKind() == DistanceKind::kLipschitz ? MarchMethod::FixedStep
                                                                  : scene.render.method,
              scene.render.step,
@@ -247,21 +250,6 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
             lanes_ = LaneFractal::from(fractal_, scene.render.precision);
         else if (!(lanes_ = LaneFractal::fromBicomplex(fractal_, scene.render.precision)))
             lanes_ = LaneFractal::fromOctonion(scene, fractal_, scene.render.precision);
-    }
-    // Reflection, refraction, the ground and the glow are paths of the SIMD path's waves
-    // (lane_tile_scenery.cpp) only.
-    if (!lanes_) {
-        const char* key = scene.material.reflectivity > 0   ? "material.reflectivity"
-                          : scene.material.transparency > 0 ? "material.transparency"
-                          : scene.ground.enabled            ? "ground.enabled"
-                          : scene.shading.glowIntensity > 0 ? "shading.glow_intensity"
-                                                            : nullptr;
-        if (key)
-            throw UserError(key, std::string(key) +
-                                     " needs the simd engine (render.engine = \"simd\", "
-                                     "render.method = \"sphere\", a quaternion, bicomplex "
-                                     "or octonion set); this scene renders with the scalar "
-                                     "reference");
     }
     shader_.toDisplay(&backgroundDisplay_, 1);
 }
@@ -335,7 +323,19 @@ std::optional<Color> FrameRenderer::traceSample(int px, int py, int k, PixelSamp
 // SIMD path finishes them.
 void FrameRenderer::renderTileScalar(const Tile& tile, ThreadTotals& thread) const {
     ShadingStats shading;
-    if (adaptive_) {
+    if (paths_) {
+        // Reflection, refraction, the ground or the glow: the paths, in waves as the lanes
+        // trace them (path_waves.h), each wave's rays one by one in double (scalar_waves.h).
+        const ScalarPaths::Frame frame{fractal_,  shader_, camera_,  march_,
+                                       material_, ground_, samples_, passes_};
+        ScalarPaths paths(frame, tile, thread.stats, shading);
+        if (adaptive_) {
+            renderAdaptively(tile, camera_.width(), camera_.height(), samples_, shader_, paths,
+                             thread.adaptive, thread.pixels);
+        } else {
+            paths.traceUniform(UniformSamples(samples_, onlySample_), thread.pixels);
+        }
+    } else if (adaptive_) {
         ScalarSampleTracer tracer(*this, thread.stats, shading);
         renderAdaptively(tile, camera_.width(), camera_.height(), samples_, shader_, tracer,
                          thread.adaptive, thread.pixels);

@@ -283,7 +283,7 @@ Color Shader::albedo(const DistanceEstimate& estimate) const {
 }
 
 Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats,
-                    SurfaceSample* surface) const {
+                    SurfaceSample* surface, bool occlusion) const {
     SurfaceSample sample;
     sample.normal = fractal_.normal(hit.outside);
     if (dot(sample.normal, ray.direction) > 0) sample.normal = -sample.normal;  // a thin sheet
@@ -296,7 +296,7 @@ Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingSta
             ? shadow(shadowOrigin(hit.outside, sample.normal, footprint), key, stats)
             : 0;
     sample.occlusion =
-        occlusionEnabled()
+        occlusion && occlusionEnabled()
             ? ambientFromOpenness(ambientOcclusion(hit.outside, sample.normal, stats))
             : 1;
     if (surface) *surface = sample;

@@ -69,8 +69,10 @@ class Shader {
     // Linear colour of the surface at `hit`, seen along `ray`. `footprint` is the pixel
     // footprint at the hit, the scale of the offsets that leave the surface.
     // `surface`, where given, receives the normal, albedo, visibility and occlusion it used.
+    // occlusion false: the ambient light unoccluded (reflected and refracted rays'
+    // hits, path_waves.h).
     Color shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats,
-                SurfaceSample* surface = nullptr) const;
+                SurfaceSample* surface = nullptr, bool occlusion = true) const;
     // The background seen along a ray that misses: a vertical gradient (the fog colour where
     // there is fog: backgroundTop() and backgroundBottom() are then the fog's).
     Color background(const Ray& ray) const;

@@ -67,9 +67,10 @@ std::vector<Parameter> renderParameters() {
                          "Bits per channel of the PNG image", {8, 16}),
         choiceParameter("render", "engine", &S::render, &R::engine, "simd",
                         {{"simd", RenderEngine::Simd}, {"scalar", RenderEngine::Scalar}},
-                        "simd marches many rays at once in SIMD lanes (z^d + c with sphere "
-                        "tracing; other formulas fall back); scalar is the double-precision "
-                        "reference marcher"),
+                        "simd marches many rays at once in SIMD lanes (sphere tracing of the "
+                        "quaternions, bicomplex polynomials and octonion real forms; the rest "
+                        "takes scalar); scalar is the double-precision reference, which draws "
+                        "everything"),
         choiceParameter("render", "precision", &S::render, &R::precision, "single",
                         {{"single", Precision::Single}, {"double", Precision::Double}},
                         "Floating-point precision of the simd engine: single is fastest, double "
