@@ -56,7 +56,7 @@ Fractal Fractal::fromSettings(const FractalSettings& fractal, const SliceSetting
 DistanceEstimate Fractal::estimate(const Point3d& p) const {
     if (hypercomplex_) {
         DistanceEstimate e = hypercomplex_->set.estimate(hypercomplex_->slice.fromWorld(p));
-        e.distance /= hypercomplex_->slice.stretch();
+        e.distance *= hypercomplex_->slice.stepScale();
         return e;
     }
     DistanceEstimate e = set_->estimate(slice_->quaternionFromWorld(p));
@@ -85,11 +85,11 @@ double Fractal::escapeRadius() const {
 
 Vector3d Fractal::normal(const Point3d& p) const {
     if (hypercomplex_) {
-        const HypercomplexSlice& slice = hypercomplex_->slice;
+        const Slice& slice = hypercomplex_->slice;
         auto g = hypercomplex_->set.potentialGradient(slice.fromWorld(p), slice.tangents());
         return normalOrOutward(Vector3d(g[0], g[1], g[2]), p);
     }
-    auto g = set_->potentialGradient(slice_->quaternionFromWorld(p), slice_->tangents());
+    auto g = set_->potentialGradient(slice_->quaternionFromWorld(p), slice_->quaternionTangents());
     return normalOrOutward(Vector3d(g[0], g[1], g[2]), p);
 }
 

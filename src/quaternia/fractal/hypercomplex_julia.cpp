@@ -53,58 +53,6 @@ Complex hornerDerivative(const std::vector<Complex>& c, const Complex& w) {
 
 }  // namespace
 
-// ---- Slice ------------------------------------------------------------------------------------
-
-HypercomplexSlice::HypercomplexSlice(const SliceSettings& settings, Algebra algebra) {
-    if (algebraDimension(algebra) == 4) {
-        // The quaternion slice map (slice.h) is affine: its value at 0 and its three tangents.
-        const Slice slice(settings);
-        const Quaternion o = slice.quaternionFromWorld(Point3d(0, 0, 0));
-        origin_ = {o.w, o.x, o.y, o.z, 0, 0, 0, 0};
-        for (int a = 0; a < 3; ++a) {
-            const Quaternion& t = slice.tangents()[size_t(a)];
-            axes_[size_t(a)] = {t.w, t.x, t.y, t.z, 0, 0, 0, 0};
-        }
-        stretch_ = 1 / slice.stepScale();
-        quaternionSlice_ = true;
-        return;
-    }
-    for (size_t n = 0; n < settings.origin.size() && n < 8; ++n)
-        origin_[n] = settings.origin[n];
-    if (settings.axes.size() != 24) {
-        axes_ = {basisElement(0), basisElement(1), basisElement(2)};
-        return;
-    }
-    // Gram-Schmidt in the order given.
-    for (size_t a = 0; a < 3; ++a) {
-        Hypercomplex v{};
-        for (size_t n = 0; n < 8; ++n)
-            v[n] = settings.axes[8 * a + n];
-        const double given = std::sqrt(normSquared(v));
-        for (size_t b = 0; b < a; ++b)
-            v = v - dotProduct(v, axes_[b]) * axes_[b];
-        const double left = std::sqrt(normSquared(v));
-        if (!(given > 0) || !(left > 1e-9 * given)) {
-            throw UserError("slice.axes", "slice.axes: axis " + std::to_string(a + 1) +
-                                              " lies in the span of the axes before it; three "
-                                              "independent directions are needed");
-        }
-        axes_[a] = (1 / left) * v;
-    }
-}
-
-double HypercomplexSlice::boundingRadius(double bailout) const {
-    if (quaternionSlice_) return bailout;
-    double along = 0;
-    for (const Hypercomplex& axis : axes_)
-        along += dotProduct(origin_, axis) * dotProduct(origin_, axis);
-    return bailout + std::sqrt(along);
-}
-
-Hypercomplex HypercomplexSlice::fromWorld(const Point3d& p) const {
-    return origin_ + p.x * axes_[0] + p.y * axes_[1] + p.z * axes_[2];
-}
-
 // ---- The set ----------------------------------------------------------------------------------
 
 HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxIterations,
@@ -435,7 +383,7 @@ std::shared_ptr<const HypercomplexFractal> hypercomplexFractalOf(const FractalSe
     }();
     HypercomplexJuliaSet set(std::move(formula), fractal.maxIterations, fractal.bailout);
     return std::make_shared<const HypercomplexFractal>(
-        HypercomplexFractal{std::move(set), HypercomplexSlice(slice, algebra)});
+        HypercomplexFractal{std::move(set), Slice(slice, algebra)});
 }
 
 }  // namespace quaternia

@@ -28,6 +28,7 @@
 #include "quaternia/fractal/distance.h"
 #include "quaternia/fractal/duplex_component.h"
 #include "quaternia/fractal/fractal_settings.h"
+#include "quaternia/fractal/slice.h"
 
 namespace quaternia {
 
@@ -35,29 +36,6 @@ namespace quaternia {
 enum class DistanceKind {
     kEstimate,  // the escape-time estimate (quaternions, octonions, bicomplex numbers)
     kLipschitz  // a proven lower bound, often far below the distance: march by fixed steps
-};
-
-// From 3D to the algebra: the point (x, y, z) stands for origin + x e_0 + y e_1 + z e_2 with
-// orthonormal e_n (an isometry). 4-component algebras take the quaternion slice (slice.h).
-class HypercomplexSlice {
-  public:
-    // Throws UserError naming slice.axes for axes that do not span three dimensions.
-    HypercomplexSlice(const SliceSettings& settings, Algebra algebra);
-    Hypercomplex fromWorld(const Point3d& p) const;
-    const std::array<Hypercomplex, 3>& tangents() const { return axes_; }
-    // A 3D step of length L moves the algebra's point by at most L times this.
-    double stretch() const { return stretch_; }
-    // A radius about the 3D origin outside which no point maps into the ball |q| <= bailout:
-    // the bailout for the quaternion slice (|p| <= |s(p)|, and the rotation keeps norms); for
-    // the 8-component slices, an isometry, the bailout plus the length of the origin's part
-    // along the axes.
-    double boundingRadius(double bailout) const;
-
-  private:
-    Hypercomplex origin_{};
-    std::array<Hypercomplex, 3> axes_{};
-    double stretch_ = 1;
-    bool quaternionSlice_ = false;  // 4-component algebras: slice.h's map (affine)
 };
 
 class HypercomplexJuliaSet {
@@ -120,7 +98,7 @@ class HypercomplexJuliaSet {
 // The set and slice of a fractal whose algebra is not the quaternions.
 struct HypercomplexFractal {
     HypercomplexJuliaSet set;
-    HypercomplexSlice slice;
+    Slice slice;
 };
 
 // Throws UserError naming fractal.formula or slice.axes where they do not make one.

@@ -32,7 +32,7 @@ std::optional<OctonionFold> foldOctonion(const std::string& formulaText,
         u[1] = 1;
     // The slice map's value at 0 and its three tangents (affine), their parts orthogonal to 1
     // and u, and an orthonormal basis of the span of those parts.
-    const HypercomplexSlice& slice = octonion.slice;
+    const Slice& slice = octonion.slice;
     const std::array<Hypercomplex, 4> vectors = {slice.fromWorld(Point3d(0, 0, 0)),
                                                  slice.tangents()[0], slice.tangents()[1],
                                                  slice.tangents()[2]};

@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+
+#include "quaternia/util/error.h"
 
 namespace quaternia {
 
@@ -33,7 +36,33 @@ std::array<Quaternion, 2> rotationFromPlaneAngles(const std::array<double, 6>& a
     return {left, right};
 }
 
-Slice::Slice(const SliceSettings& settings) : distance_(settings.distance) {
+Slice::Slice(const SliceSettings& settings, Algebra algebra)
+    : dimension_(algebraDimension(algebra)), distance_(settings.distance) {
+    if (dimension_ == 8) {
+        for (size_t n = 0; n < settings.origin.size() && n < 8; ++n)
+            origin_[n] = settings.origin[n];
+        if (settings.axes.size() != 24) {
+            tangents_ = {basisElement(0), basisElement(1), basisElement(2)};
+            return;
+        }
+        // Gram-Schmidt in the order given.
+        for (size_t a = 0; a < 3; ++a) {
+            Hypercomplex v{};
+            for (size_t n = 0; n < 8; ++n)
+                v[n] = settings.axes[8 * a + n];
+            const double given = std::sqrt(normSquared(v));
+            for (size_t b = 0; b < a; ++b)
+                v = v - dotProduct(v, tangents_[b]) * tangents_[b];
+            const double left = std::sqrt(normSquared(v));
+            if (!(given > 0) || !(left > 1e-9 * given)) {
+                throw UserError("slice.axes", "slice.axes: axis " + std::to_string(a + 1) +
+                                                  " lies in the span of the axes before it; "
+                                                  "three independent directions are needed");
+            }
+            tangents_[a] = (1 / left) * v;
+        }
+        return;
+    }
     // SliceSettings::normal holds (x, y, z, w) in the components (w, x, y, z) of a Quaternion.
     Quaternion unit = normalize(settings.normal);
     unitNormal_ = {unit.w, unit.x, unit.y, unit.z};
@@ -41,13 +70,23 @@ Slice::Slice(const SliceSettings& settings) : distance_(settings.distance) {
     left_ = normalize(settings.left) * planeLeft;
     right_ = planeRight * normalize(settings.right);
     // d s(p) / d x_a = e_a - (s^_a / s^_w) e_w, then rotated like the point itself.
+    std::array<Quaternion, 3> tangents;
     for (int axis = 0; axis < 3; ++axis) {
         Quaternion direction;
         direction[axis] = 1;
         direction.z = -unitNormal_[axis] / unitNormal_[3];
-        tangents_[axis] = left_ * direction * right_;
+        tangents[axis] = left_ * direction * right_;
     }
+    setQuaternionTangents(tangents);
     stepScale_ = std::abs(unitNormal_[3]);
+}
+
+void Slice::setQuaternionTangents(const std::array<Quaternion, 3>& tangents) {
+    quaternionTangents_ = tangents;
+    for (size_t a = 0; a < 3; ++a) {
+        const Quaternion& t = tangents[a];
+        tangents_[a] = {t.w, t.x, t.y, t.z, 0, 0, 0, 0};
+    }
 }
 
 Quaternion Slice::embed(const Point3d& p) const {
@@ -59,14 +98,31 @@ Quaternion Slice::embed(const Point3d& p) const {
 Slice Slice::isometry(const Quaternion& origin, const std::array<Quaternion, 3>& axes) {
     Slice slice;
     slice.isometryOrigin_ = origin;
-    slice.tangents_ = axes;
+    slice.setQuaternionTangents(axes);
     return slice;
 }
 
 Quaternion Slice::quaternionFromWorld(const Point3d& p) const {
-    if (isometryOrigin_)
-        return *isometryOrigin_ + tangents_[0] * p.x + tangents_[1] * p.y + tangents_[2] * p.z;
+    if (isometryOrigin_) {
+        const std::array<Quaternion, 3>& t = quaternionTangents_;
+        return *isometryOrigin_ + t[0] * p.x + t[1] * p.y + t[2] * p.z;
+    }
     return left_ * embed(p) * right_;
+}
+
+Hypercomplex Slice::fromWorld(const Point3d& p) const {
+    if (dimension_ == 8)
+        return origin_ + p.x * tangents_[0] + p.y * tangents_[1] + p.z * tangents_[2];
+    const Quaternion q = quaternionFromWorld(p);
+    return {q.w, q.x, q.y, q.z, 0, 0, 0, 0};
+}
+
+double Slice::boundingRadius(double bailout) const {
+    if (dimension_ == 4) return bailout;
+    double along = 0;
+    for (const Hypercomplex& axis : tangents_)
+        along += dotProduct(origin_, axis) * dotProduct(origin_, axis);
+    return bailout + std::sqrt(along);
 }
 
 }  // namespace quaternia

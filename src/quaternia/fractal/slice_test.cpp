@@ -68,9 +68,9 @@ TEST(Slice, TangentsAreDerivativesOfTheMap) {
         Point3d shifted = p;
         shifted[axis] += 1;
         expectNear(slice.quaternionFromWorld(shifted) - slice.quaternionFromWorld(p),
-                   slice.tangents()[axis], 1e-12);
+                   slice.quaternionTangents()[axis], 1e-12);
         // A 3D step of length 1 moves the quaternion by at most 1 / stepScale.
-        EXPECT_LE(norm(slice.tangents()[axis]), 1 / slice.stepScale() + 1e-12);
+        EXPECT_LE(norm(slice.quaternionTangents()[axis]), 1 / slice.stepScale() + 1e-12);
     }
 }
 

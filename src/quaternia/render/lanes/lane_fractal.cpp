@@ -96,7 +96,7 @@ LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
     // The slice map is affine: its value at the origin plus the images of the unit vectors.
     lanes.origin = components(slice.quaternionFromWorld(Point3d(0, 0, 0)));
     for (int axis = 0; axis < 3; ++axis)
-        lanes.axes[axis] = components(slice.tangents()[axis]);
+        lanes.axes[axis] = components(slice.quaternionTangents()[axis]);
     lanes.maxIterations = set.maxIterations();
     lanes.bailoutSquared = set.bailout() * set.bailout();
     lanes.escapeRadiusSquared = set.escapeRadius() * set.escapeRadius();
@@ -133,7 +133,7 @@ std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Pr
     if (2 * bailoutSquared < bicomplex.escapeRadiusSquared[0] + bicomplex.escapeRadiusSquared[1] ||
         set.bailout() > 100)
         return std::nullopt;
-    // The slice map (affine, HypercomplexSlice) followed by the duplex map, linear.
+    // The slice map (affine, slice.h) followed by the duplex map, linear.
     auto duplex = [](const Hypercomplex& q) {
         const auto [a, b] = duplexForm(q);
         return std::array<double, 4>{a.real(), a.imag(), b.real(), b.imag()};
@@ -145,7 +145,7 @@ std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Pr
     lanes.degree = formula.degree();
     lanes.maxIterations = set.maxIterations();
     lanes.bailoutSquared = lanes.escapeRadiusSquared = bailoutSquared;
-    lanes.stepScale = 1 / other->slice.stretch();
+    lanes.stepScale = other->slice.stepScale();
     lanes.precision = precision;
     lanes.boundingRadius = other->slice.boundingRadius(set.bailout());
     lanes.bicomplex = std::move(bicomplex);
@@ -178,7 +178,7 @@ std::optional<LaneFractal> LaneFractal::fromOctonion(const Scene& scene, const F
         }
     }
     lanes.folded = true;
-    lanes.stepScale = 1 / other->slice.stretch();
+    lanes.stepScale = other->slice.stepScale();
     lanes.boundingRadius = other->slice.boundingRadius(std::sqrt(lanes.bailoutSquared));
     return lanes;
 }
