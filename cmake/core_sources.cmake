@@ -20,6 +20,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/algebra/hypercomplex_formula.cpp
   quaternia/fractal/distance.cpp
   quaternia/fractal/fractal.cpp
+  quaternia/fractal/algebra_rules.cpp
   quaternia/fractal/slice.cpp
   quaternia/fractal/hypercomplex_julia.cpp
   quaternia/fractal/duplex_component.cpp

@@ -168,7 +168,7 @@ void runOrbit(const Scene& scene) {
     }
     const auto fractal = hypercomplexFractalFromScene(scene);
     const Hypercomplex z0{z.w, z.x, z.y, z.z, 0, 0, 0, 0};
-    const auto& set = fractal->set;
+    const auto& set = *fractal.setAs<HypercomplexJuliaSet>();
     if (set.formula().dimension() == 4)
         analyzeHypercomplexOrbit<4>(set.formula(), set.escapeRadius(), z0, options);
     else

@@ -196,7 +196,7 @@ int report(const OrbitCommandOptions& options, const Scene& scene, const Result&
 // The orbit in another algebra (orbit.h): z0 gives components 0 .. 3, the rest are 0.
 int runHypercomplexOrbit(const OrbitCommandOptions& options, const Scene& scene) {
     const auto fractal = hypercomplexFractalFromScene(scene);
-    const HypercomplexJuliaSet& set = fractal->set;
+    const HypercomplexJuliaSet& set = *fractal.setAs<HypercomplexJuliaSet>();
     OrbitOptions orbitOptions;
     orbitOptions.maxIterations = scene.orbit.maxIterations;
     const Quaternion& z = scene.orbit.z0;

@@ -75,8 +75,8 @@ double smoothEscapeCount(int n, double radiusSquared, int degree) {
     return n + 1 - std::log(std::max(1e-12, 0.5 * std::log(radiusSquared))) / std::log(d);
 }
 
-JuliaSet::JuliaSet(Polynomial polynomial, int maxIterations, double bailout,
-                   std::shared_ptr<const FormulaProgram> program)
+QuaternionJuliaSet::QuaternionJuliaSet(Polynomial polynomial, int maxIterations, double bailout,
+                                       std::shared_ptr<const FormulaProgram> program)
     : polynomial_(std::move(polynomial)),
       program_(program ? std::move(program)
                        : std::make_shared<const FormulaProgram>(
@@ -94,26 +94,26 @@ JuliaSet::JuliaSet(Polynomial polynomial, int maxIterations, double bailout,
     estimateRadiusSquared_ = continuationRadiusSquared<double>(degree_);
 }
 
-Quaternion JuliaSet::derivative(const Quaternion& z, const Quaternion& h) const {
+Quaternion QuaternionJuliaSet::derivative(const Quaternion& z, const Quaternion& h) const {
     if (power_ && power_->degree == 2) return quadraticDerivative(z, h, power_->scale);
     return polynomial_.derivative(z, h);
 }
 
-DistanceEstimate JuliaSet::estimate(const Quaternion& z0) const {
+DistanceEstimate QuaternionJuliaSet::estimate(const Quaternion& z0) const {
     IterationLimits limits{maxIterations_, bailout_ * bailout_, escapeRadius_ * escapeRadius_,
                            degree_, estimateRadiusSquared_};
     return withMap(power_, polynomial_,
                    [&](const auto& map) { return estimateWith(map, limits, z0); });
 }
 
-bool JuliaSet::contains(const Quaternion& z0) const {
+bool QuaternionJuliaSet::contains(const Quaternion& z0) const {
     IterationLimits limits{maxIterations_, bailout_ * bailout_, escapeRadius_ * escapeRadius_,
                            degree_, estimateRadiusSquared_};
     return withMap(power_, polynomial_,
                    [&](const auto& map) { return containsWith(map, limits, z0); });
 }
 
-double JuliaSet::logRadiusAfter(const Quaternion& z0, int iterations) const {
+double QuaternionJuliaSet::logRadiusAfter(const Quaternion& z0, int iterations) const {
     return withMap(power_, polynomial_, [&](const auto& map) {
         Quaternion z = z0;
         for (int n = 0; n < iterations; ++n)
@@ -122,13 +122,13 @@ double JuliaSet::logRadiusAfter(const Quaternion& z0, int iterations) const {
     });
 }
 
-int JuliaSet::gradientIterations(const Quaternion& z0) const {
+int QuaternionJuliaSet::gradientIterations(const Quaternion& z0) const {
     DistanceEstimate e = estimate(z0);
     return e.inside ? maxIterations_ - 1 : e.iterations;
 }
 
-std::array<double, 3> JuliaSet::potentialGradient(const Quaternion& z0,
-                                                  const std::array<Quaternion, 3>& tangents) const {
+std::array<double, 3> QuaternionJuliaSet::potentialGradient(
+    const Quaternion& z0, const std::array<Quaternion, 3>& tangents) const {
     // The same iterations as estimate(), carrying the three tangents through the Jacobian of p
     // at each iterate: the chain rule for d z_M / d x_a.
     const int iterations = gradientIterations(z0);

@@ -12,8 +12,8 @@
 namespace quaternia {
 namespace {
 
-JuliaSet quadratic(const Quaternion& c, int maxIterations, double bailout = 0) {
-    return JuliaSet(compileFormula("z^2 + c", c), maxIterations, bailout);
+QuaternionJuliaSet quadratic(const Quaternion& c, int maxIterations, double bailout = 0) {
+    return QuaternionJuliaSet(compileFormula("z^2 + c", c), maxIterations, bailout);
 }
 
 Quaternion randomUnit(std::mt19937& rng) {
@@ -25,7 +25,7 @@ Quaternion randomUnit(std::mt19937& rng) {
 // iteration count (docs/facts.md, Distance estimate), below the true distance r - 1 for
 // 1 < r < 4.92.
 TEST(DistanceEstimate, IsHalfRLogRForZeroC) {
-    JuliaSet set = quadratic(Quaternion{}, 50);
+    QuaternionJuliaSet set = quadratic(Quaternion{}, 50);
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> radius(1.001, 4.0);
     for (int k = 0; k < 2000; ++k) {
@@ -38,7 +38,7 @@ TEST(DistanceEstimate, IsHalfRLogRForZeroC) {
 }
 
 TEST(DistanceEstimate, IsZeroInsideTheSet) {
-    JuliaSet set = quadratic(Quaternion{}, 50);
+    QuaternionJuliaSet set = quadratic(Quaternion{}, 50);
     DistanceEstimate e = set.estimate(Quaternion(0.3, 0.2, -0.1, 0.5));
     EXPECT_TRUE(e.inside);
     EXPECT_EQ(e.distance, 0);
@@ -49,7 +49,7 @@ TEST(DistanceEstimate, IsZeroInsideTheSet) {
 // radius shrinks with the degree.
 TEST(DistanceEstimate, StaysFiniteForHighDegreeAndLargeBailout) {
     for (double bailout : {0.0, 1000.0}) {
-        JuliaSet set(compileFormula("z^40 + c", Quaternion(0.3, 0.1, 0, 0)), 50, bailout);
+        QuaternionJuliaSet set(compileFormula("z^40 + c", Quaternion(0.3, 0.1, 0, 0)), 50, bailout);
         std::mt19937 rng(23);
         std::uniform_real_distribution<double> radius(0.5, bailout == 0 ? 2.0 : 999.0);
         for (int k = 0; k < 1000; ++k) {
@@ -68,7 +68,7 @@ TEST(DistanceEstimate, StaysFiniteForHighDegreeAndLargeBailout) {
 // 2.5e-4) may have an estimate beyond the distance to it.
 TEST(DistanceEstimate, UncertainEscapeNeverReachesPastTheFirstMemberAlongALine) {
     const Quaternion c(-0.307692, 1.076923, 0.461538, 0.615385);
-    JuliaSet set(compileFormula("z (0.5+0.1j) z + c", c), 20, 1.692820323);
+    QuaternionJuliaSet set(compileFormula("z (0.5+0.1j) z + c", c), 20, 1.692820323);
     ASSERT_GT(set.escapeRadius(), set.bailout());
     std::mt19937 rng(5);
     std::normal_distribution<double> gauss;
@@ -103,7 +103,7 @@ TEST(DistanceEstimate, UncertainEscapeNeverReachesPastTheFirstMemberAlongALine) 
 // points near the set it must not exceed the distance to the nearest member of a fine grid.
 TEST(DistanceEstimate, TwoSidedPolynomialStaysBelowGridDistance) {
     const Quaternion c(-0.3, 0.4, 0.1, 0);
-    JuliaSet set(compileFormula("(1+0.5i) z (0.8-0.3k) z + c", c), 60, 0);
+    QuaternionJuliaSet set(compileFormula("(1+0.5i) z (0.8-0.3k) z + c", c), 60, 0);
     const int n = 70;
     const double extent = set.escapeRadius();
     const double spacing = 2 * extent / n;
@@ -138,7 +138,7 @@ TEST(DistanceEstimate, TwoSidedPolynomialStaysBelowGridDistance) {
 TEST(JuliaSet, MatchesComplexFilledJuliaSetOnTheComplexPlane) {
     const std::complex<double> c(-0.8, 0.156);
     const int maxIterations = 40;
-    JuliaSet set = quadratic(Quaternion(c.real(), c.imag(), 0, 0), maxIterations);
+    QuaternionJuliaSet set = quadratic(Quaternion(c.real(), c.imag(), 0, 0), maxIterations);
     const double bailout = set.bailout();
     int mismatches = 0, members = 0;
     for (int row = 0; row < 200; ++row) {
@@ -164,7 +164,7 @@ TEST(JuliaSet, MatchesComplexFilledJuliaSetOnTheComplexPlane) {
 
 // For z^2 + c, (-q)^2 = q^2 exactly, also in floating point: K = -K without exception.
 TEST(JuliaSet, IsCentrallySymmetric) {
-    JuliaSet set = quadratic(Quaternion(-0.2, 0.6, 0.2, 0.2), 30);
+    QuaternionJuliaSet set = quadratic(Quaternion(-0.2, 0.6, 0.2, 0.2), 30);
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> coordinate(-1.5, 1.5);
     int members = 0;
@@ -180,7 +180,7 @@ TEST(JuliaSet, IsCentrallySymmetric) {
 // Membership that a rotation should preserve, compared on random points; rounding may flip a
 // point within 1e-9 of the boundary, so each mismatch must be such a point.
 template <typename Map>
-void expectInvariant(const JuliaSet& set, Map map, uint32_t seed) {
+void expectInvariant(const QuaternionJuliaSet& set, Map map, uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> coordinate(-1.6, 1.6);
     int members = 0;
@@ -197,14 +197,14 @@ void expectInvariant(const JuliaSet& set, Map map, uint32_t seed) {
 
 // Real c: (a, v) is in K iff a + |v| i is: a solid of revolution about the real axis.
 TEST(JuliaSet, RealConstantGivesSolidOfRevolution) {
-    JuliaSet set = quadratic(Quaternion(-0.9), 30);
+    QuaternionJuliaSet set = quadratic(Quaternion(-0.9), 30);
     expectInvariant(
         set, [](const Quaternion& q) { return Quaternion(q.w, imaginaryNorm(q), 0, 0); }, 5);
 }
 
 // c in span{1, i}: (a, b, d, e) is in K iff (a, b, sqrt(d^2 + e^2), 0) is.
 TEST(JuliaSet, HiddenDimensionRotationInvariance) {
-    JuliaSet set = quadratic(Quaternion(-0.8, 0.156, 0, 0), 30);
+    QuaternionJuliaSet set = quadratic(Quaternion(-0.8, 0.156, 0, 0), 30);
     expectInvariant(
         set, [](const Quaternion& q) { return Quaternion(q.w, q.x, std::hypot(q.y, q.z), 0); }, 9);
 }
@@ -214,8 +214,8 @@ TEST(JuliaSet, ConjugationRotatesTheSet) {
     const Quaternion c(-0.2, 0.6, 0.2, 0.2);
     std::mt19937 rng(13);
     Quaternion u = randomUnit(rng);
-    JuliaSet original = quadratic(c, 30);
-    JuliaSet rotated = quadratic(u * c * conj(u), 30);
+    QuaternionJuliaSet original = quadratic(c, 30);
+    QuaternionJuliaSet rotated = quadratic(u * c * conj(u), 30);
     std::uniform_real_distribution<double> coordinate(-1.5, 1.5);
     for (int k = 0; k < 5000; ++k) {
         Quaternion q(coordinate(rng), coordinate(rng), coordinate(rng), coordinate(rng));
@@ -230,7 +230,7 @@ TEST(JuliaSet, ConjugationRotatesTheSet) {
 // axis in [-beta, beta] (docs/facts.md, Escape radius and bounding sphere).
 TEST(JuliaSet, EscapeRadiusIsTightForNegativeRealC) {
     for (double c : {0.0, -0.5, -1.0, -2.0}) {
-        JuliaSet set = quadratic(Quaternion(c), 25);
+        QuaternionJuliaSet set = quadratic(Quaternion(c), 25);
         double beta = (1 + std::sqrt(1 - 4 * c)) / 2;
         EXPECT_NEAR(set.escapeRadius(), beta, 1e-12);
         EXPECT_TRUE(set.contains(Quaternion(0.999 * beta))) << c;
@@ -238,7 +238,7 @@ TEST(JuliaSet, EscapeRadiusIsTightForNegativeRealC) {
         EXPECT_FALSE(set.contains(Quaternion(1.001 * beta))) << c;
     }
     std::mt19937 rng(17);
-    JuliaSet set = quadratic(Quaternion(-0.2, 0.6, 0.2, 0.2), 200);
+    QuaternionJuliaSet set = quadratic(Quaternion(-0.2, 0.6, 0.2, 0.2), 200);
     for (int k = 0; k < 1000; ++k) {
         EXPECT_FALSE(set.contains(randomUnit(rng) * (set.escapeRadius() * 1.0001)));
     }
@@ -255,9 +255,9 @@ TEST(JuliaSet, RejectsBailoutBelowOne) {
 
 // The iterates z_0 .. z_{N-1} are tested, as POV-Ray does: with N = 1 only |z_0| counts.
 TEST(JuliaSet, TestsIteratesZeroToNMinusOne) {
-    JuliaSet one = quadratic(Quaternion(0.3), 1, 2.0);
+    QuaternionJuliaSet one = quadratic(Quaternion(0.3), 1, 2.0);
     EXPECT_TRUE(one.contains(Quaternion(1.9)));  // z_1 = 3.91 is never tested
-    JuliaSet two = quadratic(Quaternion(0.3), 2, 2.0);
+    QuaternionJuliaSet two = quadratic(Quaternion(0.3), 2, 2.0);
     EXPECT_FALSE(two.contains(Quaternion(1.9)));
     EXPECT_EQ(two.estimate(Quaternion(1.9)).escapeIteration, 1);
     EXPECT_TRUE(one.estimate(Quaternion(1.9)).inside);

@@ -57,8 +57,10 @@ Complex hornerDerivative(const std::vector<Complex>& c, const Complex& w) {
 
 HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxIterations,
                                            double bailout)
-    : formula_(std::move(formula)), maxIterations_(maxIterations) {
-    const Algebra algebra = formula_.algebra();
+    : formula_(std::move(formula)),
+      rules_(&algebraRules(formula_.algebra())),
+      maxIterations_(maxIterations) {
+    const std::string algebra(algebraName(formula_.algebra()));
     const int d = formula_.degree();
     if (d < 2 && !formula_.transcendental()) {
         throw UserError("fractal.formula", "fractal.formula has degree " + std::to_string(d) +
@@ -74,35 +76,33 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
         // Bicomplex functions (only they take them): no estimate and no Lipschitz bound on a
         // ball (poles, branch points): Algorithm 2's fixed steps alone, POV-Ray's bailout 4.
         kind_ = DistanceKind::kLipschitz;
-        bailout_ = escapeRadius_ = bailout == 0 ? 4.0 : bailout;
+        bailout_ = escapeRadius_ = bailout == 0 ? rules_->defaultBailout : bailout;
         return;
     }
-    switch (algebra) {
-        case Algebra::kOctonion:
-        case Algebra::kQuaternion: {
-            kind_ = DistanceKind::kEstimate;
+    kind_ = rules_->distance;
+    switch (rules_->escape) {
+        case EscapeRule::kMultiplicativeNorm: {
             // |top-degree part| = the product of its coefficients' norms when it is one term
             // (the norm is multiplicative); sums of top-degree terms may cancel.
             const double m = formula_.topDegreeMinimum();
             if (!(m > 0)) {
                 if (bailout == 0)
                     throw UserError("fractal.bailout",
-                                    "fractal.bailout: give a bailout above 1: the octonion escape "
-                                    "radius is derived only for formulas whose highest degree is "
-                                    "a single term");
+                                    "fractal.bailout: give a bailout above 1: the " + algebra +
+                                        " escape radius is derived only for formulas whose "
+                                        "highest degree is a single term");
                 escapeRadius_ = bailout;
             } else {
                 std::vector<double> b(bound.begin(), bound.begin() + d);
                 b[0] = euclideanNorm(formula_.evaluate(Hypercomplex{}));
                 b[1] += 1;
-                escapeRadius_ = escapeRadiusFrom(m, b, d, "octonion formula");
+                escapeRadius_ = escapeRadiusFrom(m, b, d, algebra + " formula");
             }
             bailout_ = bailout == 0 ? escapeRadius_ : bailout;
             break;
         }
-        case Algebra::kBicomplex: {
-            kind_ = DistanceKind::kEstimate;
-            bailout_ = bailout == 0 ? 4.0 : bailout;
+        case EscapeRule::kDuplexComponents: {
+            bailout_ = bailout == 0 ? rules_->defaultBailout : bailout;
             // The two complex polynomials of the duplex form, from d + 1 values on a circle
             // (the discrete Fourier transform of p(r w^k) gives the coefficients times r^j).
             const int samples = d + 1;
@@ -142,10 +142,8 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
             escapeRadius_ = bailout_;
             break;
         }
-        case Algebra::kCoquaternion:
-        case Algebra::kBiquaternion:
-            kind_ = DistanceKind::kLipschitz;
-            bailout_ = bailout == 0 ? 2.0 : bailout;
+        case EscapeRule::kNone:
+            bailout_ = bailout == 0 ? rules_->defaultBailout : bailout;
             escapeRadius_ = bailout_;
             break;
     }
@@ -153,20 +151,20 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
 
 DistanceEstimate HypercomplexJuliaSet::estimate(const Hypercomplex& z0) const {
     if (kind_ == DistanceKind::kLipschitz) return lipschitzDistance(z0);
-    switch (formula_.algebra()) {
-        case Algebra::kBicomplex:
+    switch (rules_->escape) {
+        case EscapeRule::kDuplexComponents:
             return bicomplexEstimate(z0);
-        case Algebra::kCoquaternion:
-        case Algebra::kBiquaternion:
+        case EscapeRule::kNone:
             return lipschitzDistance(z0);
-        default:
-            return octonionEstimate(z0);
+        case EscapeRule::kMultiplicativeNorm:
+            break;
     }
+    return multiplicativeEstimate(z0);
 }
 
 bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {
     const double bailoutSquared = bailout_ * bailout_;
-    if (formula_.algebra() == Algebra::kBicomplex && !formula_.transcendental()) {
+    if (rules_->escape == EscapeRule::kDuplexComponents && !formula_.transcendental()) {
         auto w = duplexForm(z0);
         for (int n = 0;; ++n) {
             // |q|^2 = (|a|^2 + |b|^2) / 2
@@ -184,7 +182,7 @@ bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {
     }
 }
 
-DistanceEstimate HypercomplexJuliaSet::octonionEstimate(const Hypercomplex& z0) const {
+DistanceEstimate HypercomplexJuliaSet::multiplicativeEstimate(const Hypercomplex& z0) const {
     // The quaternion loop (escape_time.h), with the running derivative bound P'(|z|).
     struct Map {
         const HypercomplexFormula& formula;
@@ -336,10 +334,10 @@ double HypercomplexJuliaSet::logRadiusAfter(const Hypercomplex& z0, int iteratio
 int HypercomplexJuliaSet::gradientIterations(const Hypercomplex& z0) const {
     const DistanceEstimate e = estimate(z0);
     if (e.inside) return maxIterations_ - 1;
-    // Octonions as the quaternions (JuliaSet::gradientIterations): the iterate where the
+    // Octonions as the quaternions (QuaternionJuliaSet::gradientIterations): the iterate where the
     // estimate was taken, so that the quaternion paths that draw octonion real forms (the SIMD
     // lanes through the fold, octonion_fold.h) shade alike.
-    if (formula_.algebra() == Algebra::kOctonion) return e.iterations;
+    if (rules_->gradientAtEstimate) return e.iterations;
     return std::min(e.escapeIteration, maxIterations_ - 1);
 }
 
@@ -366,8 +364,7 @@ std::array<double, 3> HypercomplexJuliaSet::potentialGradient(
     return {dotProduct(z, t[0]), dotProduct(z, t[1]), dotProduct(z, t[2])};
 }
 
-std::shared_ptr<const HypercomplexFractal> hypercomplexFractalOf(const FractalSettings& fractal,
-                                                                 const SliceSettings& slice) {
+std::shared_ptr<const HypercomplexJuliaSet> hypercomplexJuliaSetOf(const FractalSettings& fractal) {
     const Algebra algebra = fractal.algebra;
     const Quaternion& c4 = fractal.c;
     Hypercomplex c{c4.w, c4.x, c4.y, c4.z, 0, 0, 0, 0};
@@ -381,9 +378,8 @@ std::shared_ptr<const HypercomplexFractal> hypercomplexFractalOf(const FractalSe
             throw UserError("fractal.formula", std::string("fractal.formula: ") + e.what());
         }
     }();
-    HypercomplexJuliaSet set(std::move(formula), fractal.maxIterations, fractal.bailout);
-    return std::make_shared<const HypercomplexFractal>(
-        HypercomplexFractal{std::move(set), Slice(slice, algebra)});
+    return std::make_shared<const HypercomplexJuliaSet>(std::move(formula), fractal.maxIterations,
+                                                        fractal.bailout);
 }
 
 }  // namespace quaternia

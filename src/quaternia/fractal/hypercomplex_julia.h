@@ -25,20 +25,15 @@
 
 #include "quaternia/algebra/hypercomplex_formula.h"
 #include "quaternia/algebra/vecmath.h"
-#include "quaternia/fractal/distance.h"
+#include "quaternia/fractal/algebra_rules.h"
+#include "quaternia/fractal/distance_estimate.h"
 #include "quaternia/fractal/duplex_component.h"
 #include "quaternia/fractal/fractal_settings.h"
-#include "quaternia/fractal/slice.h"
+#include "quaternia/fractal/julia_set.h"
 
 namespace quaternia {
 
-// How a set's distance relates to the true distance to K_N.
-enum class DistanceKind {
-    kEstimate,  // the escape-time estimate (quaternions, octonions, bicomplex numbers)
-    kLipschitz  // a proven lower bound, often far below the distance: march by fixed steps
-};
-
-class HypercomplexJuliaSet {
+class HypercomplexJuliaSet final : public JuliaSet {
   public:
     // bailout 0: the escape radius for octonions (their norm is multiplicative, and the
     // formula's top-degree part must be one term), 4 for bicomplex numbers (POV-Ray's), 2 for
@@ -46,26 +41,27 @@ class HypercomplexJuliaSet {
     // fractal.bailout.
     HypercomplexJuliaSet(HypercomplexFormula formula, int maxIterations, double bailout);
 
-    DistanceEstimate estimate(const Hypercomplex& z0) const;
-    bool contains(const Hypercomplex& z0) const;
-    // ln|z_M| after exactly M iterations (or where it overflows): the potential whose gradient
-    // is the normal; and the M the normal takes at z0 (its escape iteration, at most N; for
-    // octonions, as for quaternions, the iterate where the estimate was taken).
-    double logRadiusAfter(const Hypercomplex& z0, int iterations) const;
-    int gradientIterations(const Hypercomplex& z0) const;
+    Algebra algebra() const override { return formula_.algebra(); }
+    DistanceKind distanceKind() const override { return kind_; }
+    DistanceEstimate estimate(const Hypercomplex& z0) const override;
+    bool contains(const Hypercomplex& z0) const override;
+    // ln|z_M| after exactly M iterations (or where it overflows), and the M the normal takes at
+    // z0: the iterate where the estimate was taken or the escape iteration, at most N - 1, as
+    // algebraRules() says.
+    double logRadiusAfter(const Hypercomplex& z0, int iterations) const override;
+    int gradientIterations(const Hypercomplex& z0) const override;
     // The gradient of |z_M|^2 along the slice's three tangents (the chain rule through Dp), M =
-    // gradientIterations(z0): the normal's direction, as JuliaSet::potentialGradient.
-    std::array<double, 3> potentialGradient(const Hypercomplex& z0,
-                                            const std::array<Hypercomplex, 3>& tangents) const;
+    // gradientIterations(z0): the normal's direction, as QuaternionJuliaSet::potentialGradient.
+    std::array<double, 3> potentialGradient(
+        const Hypercomplex& z0, const std::array<Hypercomplex, 3>& tangents) const override;
 
-    DistanceKind distanceKind() const { return kind_; }
     const HypercomplexFormula& formula() const { return formula_; }
-    int maxIterations() const { return maxIterations_; }
-    double bailout() const { return bailout_; }
+    int maxIterations() const override { return maxIterations_; }
+    double bailout() const override { return bailout_; }
     // K_N lies in the ball of radius bailout.
     double boundingRadius() const { return bailout_; }
     // Where orbits are certain to escape (octonions; the bailout for the other algebras).
-    double escapeRadius() const { return escapeRadius_; }
+    double escapeRadius() const override { return escapeRadius_; }
     // Bicomplex polynomials: duplex component i's complex polynomial (coefficients, lowest
     // degree first) and its escape radius; empty and 0 for functions and the other algebras.
     const std::vector<std::complex<double>>& componentCoefficients(size_t i) const {
@@ -76,7 +72,9 @@ class HypercomplexJuliaSet {
     const DuplexComponent& component(size_t i) const { return components_[i]; }
 
   private:
-    DistanceEstimate octonionEstimate(const Hypercomplex& z0) const;
+    // The estimate where the norm is multiplicative (octonions): the quaternions' loop with the
+    // formula's derivative bound.
+    DistanceEstimate multiplicativeEstimate(const Hypercomplex& z0) const;
     DistanceEstimate bicomplexEstimate(const Hypercomplex& z0) const;
     // A proven distance to K_N from the orbit's escape and the Lipschitz bounds of p along it
     // (header comment, docs/methods.md); orbits are followed at most kLipschitzOrbit iterates.
@@ -84,6 +82,7 @@ class HypercomplexJuliaSet {
     DistanceEstimate lipschitzDistance(const Hypercomplex& z0) const;
 
     HypercomplexFormula formula_;
+    const AlgebraRules* rules_;
     int maxIterations_;
     double bailout_;
     double escapeRadius_;
@@ -95,14 +94,8 @@ class HypercomplexJuliaSet {
     std::array<DuplexComponent, 2> components_;
 };
 
-// The set and slice of a fractal whose algebra is not the quaternions.
-struct HypercomplexFractal {
-    HypercomplexJuliaSet set;
-    Slice slice;
-};
-
-// Throws UserError naming fractal.formula or slice.axes where they do not make one.
-std::shared_ptr<const HypercomplexFractal> hypercomplexFractalOf(const FractalSettings& fractal,
-                                                                 const SliceSettings& slice);
+// The set of fractal.formula with fractal.c in fractal.algebra, through the multiplication table
+// (any algebra, the quaternions too). Throws UserError naming fractal.formula or fractal.bailout.
+std::shared_ptr<const HypercomplexJuliaSet> hypercomplexJuliaSetOf(const FractalSettings& fractal);
 
 }  // namespace quaternia

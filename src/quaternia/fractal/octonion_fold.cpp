@@ -7,9 +7,10 @@
 namespace quaternia {
 
 std::optional<OctonionFold> foldOctonion(const std::string& formulaText,
-                                         const HypercomplexFractal& octonion) {
-    const HypercomplexFormula& formula = octonion.set.formula();
-    if (formula.algebra() != Algebra::kOctonion || formula.transcendental()) return std::nullopt;
+                                         const HypercomplexJuliaSet& set, const Slice& slice) {
+    const HypercomplexFormula& formula = set.formula();
+    if (!algebraRules(formula.algebra()).foldsOntoQuaternions || formula.transcendental())
+        return std::nullopt;
     // The a_k, and that c is only in the constant term: the same terms for two values of c.
     std::optional<Polynomial> without, with;
     try {
@@ -32,7 +33,6 @@ std::optional<OctonionFold> foldOctonion(const std::string& formulaText,
         u[1] = 1;
     // The slice map's value at 0 and its three tangents (affine), their parts orthogonal to 1
     // and u, and an orthonormal basis of the span of those parts.
-    const Slice& slice = octonion.slice;
     const std::array<Hypercomplex, 4> vectors = {slice.fromWorld(Point3d(0, 0, 0)),
                                                  slice.tangents()[0], slice.tangents()[1],
                                                  slice.tangents()[2]};

@@ -16,6 +16,7 @@
 
 #include "quaternia/algebra/polynomial.h"
 #include "quaternia/fractal/hypercomplex_julia.h"
+#include "quaternia/fractal/slice.h"
 
 namespace quaternia {
 
@@ -34,7 +35,8 @@ struct OctonionFold {
 
 // The fold of an octonion fractal whose formula (as written in fractal.formula) is a real form;
 // nothing for any other formula (or one too large to multiply out).
+// `set` is the octonion set of that formula, `slice` the slice it is seen through.
 std::optional<OctonionFold> foldOctonion(const std::string& formula,
-                                         const HypercomplexFractal& octonion);
+                                         const HypercomplexJuliaSet& set, const Slice& slice);
 
 }  // namespace quaternia

@@ -26,9 +26,9 @@ std::string kindName(const Scene& scene) {
     return std::get<std::string>(findParameter("plane.kind")->read(scene));
 }
 
-JuliaSet juliaSetOfScene(const Scene& scene) {
-    return JuliaSet(compileFormula(scene.fractal.formula, scene.fractal.c),
-                    scene.plane.maxIterations, scene.fractal.bailout);
+QuaternionJuliaSet juliaSetOfScene(const Scene& scene) {
+    return QuaternionJuliaSet(compileFormula(scene.fractal.formula, scene.fractal.c),
+                              scene.plane.maxIterations, scene.fractal.bailout);
 }
 
 // The degree d of a formula z^d + c, checked by compiling it with a marker c: its constant must
@@ -105,19 +105,19 @@ PlaneImage renderEscape(const Scene& scene, const PlaneView& view, double scale,
 }
 
 // The quaternion kinds: each plane point is a quaternion (`toQuaternion`), iterated by
-// JuliaSet, the one iteration of the library, so that a complex image and the same plane
+// QuaternionJuliaSet, the one iteration of the library, so that a complex image and the same plane
 // sliced out of H go through the very same arithmetic.
 template <typename ToQuaternion>
 PlaneImage renderJulia(const Scene& scene, const PlaneView& view, double scale,
                        const PlaneRenderOptions& options, const ToQuaternion& toQuaternion) {
-    const JuliaSet set = juliaSetOfScene(scene);
+    const QuaternionJuliaSet set = juliaSetOfScene(scene);
     return renderEscape(scene, view, scale, options,
                         [&](std::complex<double> z) { return set.estimate(toQuaternion(z)); });
 }
 
 // The set of a scene in another algebra, iterated plane.max_iterations times (the renderer's
 // HypercomplexJuliaSet with the plane's iteration count).
-std::shared_ptr<const HypercomplexFractal> hypercomplexSetOfScene(const Scene& scene) {
+Fractal hypercomplexSetOfScene(const Scene& scene) {
     Scene planeScene = scene;
     planeScene.fractal.maxIterations = scene.plane.maxIterations;
     return hypercomplexFractalFromScene(planeScene);
@@ -131,13 +131,13 @@ std::shared_ptr<const HypercomplexFractal> hypercomplexSetOfScene(const Scene& s
 PlaneImage renderHypercomplexSlice(const Scene& scene, const PlaneView& view,
                                    const PlaneRenderOptions& options) {
     const auto fractal = hypercomplexSetOfScene(scene);
-    const HypercomplexJuliaSet& set = fractal->set;
+    const HypercomplexJuliaSet& set = *fractal.setAs<HypercomplexJuliaSet>();
     const PlaneSettings& plane = scene.plane;
     const bool throughSlice = algebraDimension(scene.fractal.algebra) == 8;
     const double scale = std::sqrt(norm(plane.u) * norm(plane.v));
     return renderEscape(scene, view, scale, options, [&](std::complex<double> z) {
         const Quaternion q = plane.origin + plane.u * z.real() + plane.v * z.imag();
-        const Hypercomplex point = throughSlice ? fractal->slice.fromWorld(Point3d(q.w, q.x, q.y))
+        const Hypercomplex point = throughSlice ? fractal.slice().fromWorld(Point3d(q.w, q.x, q.y))
                                                 : Hypercomplex{q.w, q.x, q.y, q.z, 0, 0, 0, 0};
         if (set.contains(point)) {
             DistanceEstimate inside;
@@ -165,7 +165,8 @@ Scene complexKindScene(const Scene& scene) {
         probe.fractal.c = Quaternion(0.5, 0.25, 0, 0);
         probe.fractal.cUpper = {};
     }
-    const auto axis = hypercomplexSetOfScene(probe)->set.formula().complexAxis();
+    const auto axis =
+        hypercomplexSetOfScene(probe).setAs<HypercomplexJuliaSet>()->formula().complexAxis();
     if (!axis || (mandelbrot && !inPlane(kUnitI, *axis)))
         throw UserError("plane.kind",
                         "plane.kind = \"" + kindName(scene) +

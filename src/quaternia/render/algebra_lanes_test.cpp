@@ -107,7 +107,6 @@ void expectEstimatesMatch(const Fractal& fractal, const LanesOf& lanesOf, int de
 // themselves, against Fractal::normal near the surface.
 void expectNormalsMatch(const Fractal& fractal, const LanesOf& lanesOf, const std::string& label,
                         unsigned seed) {
-    const HypercomplexFractal& other = *fractal.hypercomplex();
     PointBatch all = randomPoints(4000, 1.6, seed), nearSet;
     std::vector<int> iterations;
     for (size_t i = 0; i < all.size(); ++i) {
@@ -115,7 +114,7 @@ void expectNormalsMatch(const Fractal& fractal, const LanesOf& lanesOf, const st
         const DistanceEstimate e = fractal.estimate(p);
         if (e.inside || e.distance > 0.05) continue;
         nearSet.push(p);
-        iterations.push_back(other.set.gradientIterations(other.slice.fromWorld(p)));
+        iterations.push_back(fractal.set().gradientIterations(fractal.slice().fromWorld(p)));
     }
     ASSERT_GT(nearSet.size(), 50u) << label;
     for (Precision precision : {Precision::Double, Precision::Single}) {
@@ -176,8 +175,8 @@ TEST(BicomplexLanes, EstimatesMatchTheScalarReference) {
         const Fractal fractal = fractalFromScene(bicomplexScene(kFormulas[f], kConstants[f]));
         expectEstimatesMatch(
             fractal, [&](Precision p) { return *LaneFractal::fromBicomplex(fractal, p); },
-            fractal.hypercomplex()->set.formula().degree(), escapeIterationOf, kFormulas[f],
-            unsigned(11 + f));
+            fractal.setAs<HypercomplexJuliaSet>()->formula().degree(), escapeIterationOf,
+            kFormulas[f], unsigned(11 + f));
     }
 }
 
@@ -217,7 +216,8 @@ const char* const kOctonionFormulas[] = {"z^2 + c", "z^3 - 0.5*z + c", "z^2 + 0.
 TEST(OctonionLanes, TheFoldTakesRealFormsOnAnySlice) {
     const Scene scene = octonionScene("z^2 + c");
     const Fractal fractal = fractalFromScene(scene);
-    ASSERT_FALSE(fractal.isQuaternion());  // no isometry: the fold is needed
+    ASSERT_FALSE(fractal.setAs<QuaternionJuliaSet>() !=
+                 nullptr);  // no isometry: the fold is needed
     const std::optional<LaneFractal> lanes =
         LaneFractal::fromOctonion(scene, fractal, Precision::Single);
     ASSERT_TRUE(lanes);
@@ -239,7 +239,7 @@ TEST(OctonionLanes, EstimatesMatchTheOctonionArithmetic) {
         const Fractal fractal = fractalFromScene(scene);
         expectEstimatesMatch(
             fractal, [&](Precision p) { return *LaneFractal::fromOctonion(scene, fractal, p); },
-            fractal.hypercomplex()->set.formula().degree(), iterationsOf, formula, 31);
+            fractal.setAs<HypercomplexJuliaSet>()->formula().degree(), iterationsOf, formula, 31);
     }
 }
 

@@ -76,7 +76,7 @@ TEST_P(BicomplexReferenceCase, SceneIsPovRaysHypercomplexSet) {
         const Point3d p(u(rng), u(rng), u(rng));
         const bool pov = inPovRaysSet(p, povCase.c, povCase.iterations);
         inside += pov;
-        disagree += pov != fractal->set.contains(fractal->slice.fromWorld(p));
+        disagree += pov != fractal.set().contains(fractal.slice().fromWorld(p));
     }
     EXPECT_GT(inside, 100) << id;  // enough points of the set to tell (about 270 and 4400)
     EXPECT_EQ(disagree, 0) << id;

@@ -121,7 +121,7 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
 void LaneTileRenderer::hitNormals(LaneTileStats& stats) {
     const size_t count = hits_.size();
     // The estimate at each hit's outside point, where the orbit colours the surface: its
-    // iteration count is then the M of the analytic normal (JuliaSet::gradientIterations).
+    // iteration count is then the M of the analytic normal (QuaternionJuliaSet::gradientIterations).
     // Without orbit colouring, the normals find their M themselves.
     if (shader_->albedoUsesOrbit()) {
         estimatePoints(lanes_, hitPoints_, hitEstimates_, stats.shading);

@@ -98,11 +98,13 @@ TEST(LaneFractal, PowerFormsTakeTheirLoopsAndEveryOtherFormulaItsProgram) {
     // Its program computes the polynomial.
     const Quaternion z(0.3, -0.2, 0.5, 0.1);
     const Fractal fractal = fractalFromScene(scene);
-    EXPECT_LT(norm(general.program->evaluate(z) - fractal.set().polynomial().evaluate(z)), 1e-15);
+    EXPECT_LT(norm(general.program->evaluate(z) -
+                   fractal.setAs<QuaternionJuliaSet>()->polynomial().evaluate(z)),
+              1e-15);
 }
 
-// Double lanes compute what JuliaSet::estimate computes; float lanes agree on membership except
-// within rounding of the boundary, and on distance within the float continuation's accuracy.
+// Double lanes compute what QuaternionJuliaSet::estimate computes; float lanes agree on membership
+// except within rounding of the boundary, and on distance within the float continuation's accuracy.
 void expectEstimatesMatch(const Fractal& fractal, unsigned seed) {
     PointBatch points = randomPoints(3000, 1.6, seed);
     for (Precision precision : {Precision::Double, Precision::Single}) {
@@ -202,7 +204,9 @@ TEST(LaneFractal, SingleQuadraticTermsIterateTheirConjugate) {
     const Quaternion p1(1.5, -1, 0, 0);
     EXPECT_NEAR(lanes.normSquaredScale, 1 / normSquared(p1), 1e-15);
     EXPECT_NEAR(lanes.bailoutSquared,
-                normSquared(p1) * fractal.set().bailout() * fractal.set().bailout(), 1e-12);
+                normSquared(p1) * fractal.setAs<QuaternionJuliaSet>()->bailout() *
+                    fractal.setAs<QuaternionJuliaSet>()->bailout(),
+                1e-12);
     for (const Quaternion& z : {Quaternion(0.3, -0.2, 0.5, 0.1), Quaternion(-1, 0.4, 0, 0.7)}) {
         const Quaternion w = p1 * z, square = w * w;
         const std::array<double, 4> s{square.w, square.x, square.y, square.z};
@@ -213,7 +217,8 @@ TEST(LaneFractal, SingleQuadraticTermsIterateTheirConjugate) {
             for (int column = 0; column < 4; ++column)
                 *out[row] += (*lanes.squareMap)[size_t(4 * row + column)] * s[size_t(column)];
         }
-        const Quaternion expected = p1 * fractal.set().polynomial().evaluate(z);
+        const Quaternion expected =
+            p1 * fractal.setAs<QuaternionJuliaSet>()->polynomial().evaluate(z);
         EXPECT_LT(norm(mapped - expected), 1e-14);
         EXPECT_LT(norm(lanes.program->evaluate(w) - expected), 1e-14);
     }
@@ -244,8 +249,8 @@ TEST(MarchLanes, NormalsMatchTheAnalyticNormal) {
             DistanceEstimate e = fractal.estimate(p);
             if (e.inside || e.distance > 0.05) continue;
             nearSet.push(p);
-            iterations.push_back(
-                fractal.set().gradientIterations(fractal.slice().quaternionFromWorld(p)));
+            iterations.push_back(fractal.setAs<QuaternionJuliaSet>()->gradientIterations(
+                fractal.slice().quaternionFromWorld(p)));
         }
         ASSERT_GT(nearSet.size(), 50u) << id;
         for (Precision precision : {Precision::Double, Precision::Single}) {

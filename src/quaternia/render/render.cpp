@@ -246,7 +246,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
     // bound (hypercomplex_julia.h).
     if (scene.render.engine == RenderEngine::Simd &&
         scene.render.method == MarchMethod::SphereTracing) {
-        if (fractal_.isQuaternion())
+        if (fractal_.setAs<QuaternionJuliaSet>())
             lanes_ = LaneFractal::from(fractal_, scene.render.precision);
         else if (!(lanes_ = LaneFractal::fromBicomplex(fractal_, scene.render.precision)))
             lanes_ = LaneFractal::fromOctonion(scene, fractal_, scene.render.precision);

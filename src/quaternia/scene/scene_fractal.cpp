@@ -10,8 +10,9 @@ Fractal fractalFromScene(const Scene& scene) {
     return Fractal::fromSettings(scene.fractal, scene.slice, folding);
 }
 
-std::shared_ptr<const HypercomplexFractal> hypercomplexFractalFromScene(const Scene& scene) {
-    return hypercomplexFractalOf(scene.fractal, scene.slice);
+Fractal hypercomplexFractalFromScene(const Scene& scene) {
+    auto set = hypercomplexJuliaSetOf(scene.fractal);  // the formula and bailout first
+    return Fractal(std::move(set), Slice(scene.slice, scene.fractal.algebra));
 }
 
 }  // namespace quaternia

@@ -3,8 +3,6 @@
 // renders them (fractal.h, OctonionFolding).
 #pragma once
 
-#include <memory>
-
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/scene/scene.h"
@@ -13,7 +11,9 @@ namespace quaternia {
 
 // Throws UserError naming the bad key.
 Fractal fractalFromScene(const Scene& scene);
-// The scene's set in its own algebra (not the quaternions), never folded.
-std::shared_ptr<const HypercomplexFractal> hypercomplexFractalFromScene(const Scene& scene);
+// The scene's set in its own algebra through its multiplication table (HypercomplexJuliaSet, the
+// quaternions too), never folded, with its slice: what the commands that work in the algebra
+// itself take (orbits, planes of the other algebras).
+Fractal hypercomplexFractalFromScene(const Scene& scene);
 
 }  // namespace quaternia

@@ -1,5 +1,5 @@
 // The distance estimate in SIMD lanes, shared by the march lanes (march_lanes-inl.h):
-// JuliaSet::estimate for K vectors of points at once
+// QuaternionJuliaSet::estimate for K vectors of points at once
 // (estimateLanes), and the estimates along the rays held in lanes (estimateAlongRays).
 //
 // Like julia_steps-inl.h, this file has no namespace of its own: march_lanes-inl.h includes it
@@ -52,7 +52,7 @@ HWY_INLINE V fastLogLanes(D d, V x) {
 
 // The closing formula of the estimate, d = 0.5 |z| ln|z| / |z'| = 0.25 sqrt(|z|^2 / |z'|^2)
 // ln |z|^2, with its step scale; an overflowed |z'|^2 gives 0, which is right: the distance is
-// then far below any step. Double lanes compute it as JuliaSet::estimate does. Float lanes, whose
+// then far below any step. Double lanes compute it as QuaternionJuliaSet::estimate does. Float lanes, whose
 // estimate is only good to a few percent anyway (the continuation stops at |z| = 100), take
 // sqrt(a / b) = a / (sqrt(a) sqrt(b)) from reciprocal square root estimates (relative error
 // below 4e-4 each on every target) and the logarithm from fastLogLanes: a division, a square root
@@ -228,7 +228,7 @@ struct EstimateGroup {
     }
 };
 
-// JuliaSet::estimate (distance.cpp) in lanes: iterate while |z| <= bailout and fewer than N
+// QuaternionJuliaSet::estimate (distance.cpp) in lanes: iterate while |z| <= bailout and fewer than N
 // iterates were tested, then, where escape is certain, continue to the estimate radius. Every
 // lane runs the same iterations (no per-lane selects on z, which would lengthen the dependency
 // chain); a lane whose estimate is final is marked done and its |z|^2 and |z'|^2 are kept at

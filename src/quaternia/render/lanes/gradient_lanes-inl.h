@@ -1,4 +1,4 @@
-// The analytic gradient of the potential in SIMD lanes (JuliaSet::potentialGradient): the
+// The analytic gradient of the potential in SIMD lanes (QuaternionJuliaSet::potentialGradient): the
 // slice's three axes carried through the Jacobians of the iterates, for potentialNormalLanes
 // (march_lanes-inl.h). Two forms: three numbers for float lanes of s z^2 + c, quaternions for
 // the rest.

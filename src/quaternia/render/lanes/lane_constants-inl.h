@@ -52,7 +52,7 @@ struct LaneConstants {
     bool componentConnected[2] = {true, true}, componentBinomial[2] = {false, false};
     V criticalPotential[2], leadLog[2], logDegree, inverseLead[2], pullBackLimit[2];
     V expm1Critical[2];  // e^G* - 1
-    const HypercomplexJuliaSet* bicomplexReference = nullptr;
+    const JuliaSet* bicomplexReference = nullptr;
     // A folded octonion slice (LaneFractal::folded): the fold's rows 4 and 5 (origin, axes),
     // and 2 s, the loop's scale.
     bool folded = false;
@@ -102,7 +102,7 @@ struct LaneConstants {
                 expm1Critical[i] = hn::Set(d, T(std::expm1(critical)));
             }
             logDegree = hn::Set(d, T(std::log(double(f.degree))));
-            if (f.bicomplex->reference) bicomplexReference = &f.bicomplex->reference->set;
+            if (f.bicomplex->reference) bicomplexReference = f.bicomplex->reference.get();
         } else {
             componentEscapeRadiusSquared[0] = componentEscapeRadiusSquared[1] = hn::Zero(d);
             criticalPotential[0] = criticalPotential[1] = leadLog[0] = leadLog[1] = hn::Zero(d);

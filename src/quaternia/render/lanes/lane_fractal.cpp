@@ -8,6 +8,8 @@
 #include "quaternia/fractal/octonion_fold.h"
 #include "quaternia/render/lanes/march_lanes.h"
 
+#include "quaternia/fractal/algebra_rules.h"
+
 namespace quaternia {
 
 namespace {
@@ -57,7 +59,7 @@ void iterateConjugate(LaneFractal& lanes, const QuadraticTerm& term) {
 }  // namespace
 
 LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
-    const JuliaSet& set = fractal.set();
+    const QuaternionJuliaSet& set = *fractal.setAs<QuaternionJuliaSet>();
     LaneFractal lanes;
     const Polynomial& polynomial = set.polynomial();
     lanes.derivativeBound = polynomial.derivativeNormBoundCoefficients();
@@ -109,11 +111,12 @@ LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
 }
 
 std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Precision precision) {
-    const HypercomplexFractal* other = fractal.hypercomplex();
+    const HypercomplexJuliaSet* other = fractal.setAs<HypercomplexJuliaSet>();
     if (!other) return std::nullopt;
-    const HypercomplexJuliaSet& set = other->set;
+    const HypercomplexJuliaSet& set = *other;
     const HypercomplexFormula& formula = set.formula();
-    if (formula.algebra() != Algebra::kBicomplex || formula.transcendental()) return std::nullopt;
+    if (!algebraRules(formula.algebra()).duplexForm || formula.transcendental())
+        return std::nullopt;
     const double bailoutSquared = set.bailout() * set.bailout();
     Bicomplex bicomplex;
     for (size_t i = 0; i < 2; ++i) {
@@ -125,7 +128,7 @@ std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Pr
         bicomplex.binomial[i] = set.component(i).binomial();
         bicomplex.inverseLead[i] = 1 / set.component(i).leadModulus();
         bicomplex.pullBackLimit[i] = set.component(i).pullBackLimit(set.maxIterations());
-        if (!set.component(i).connected()) bicomplex.reference = fractal.sharedHypercomplex();
+        if (!set.component(i).connected()) bicomplex.reference = fractal.sharedSet();
     }
     // Every escape of |q| then has a component beyond its escape radius: |a|^2 <= R_1^2 and
     // |b|^2 <= R_2^2 give |q|^2 <= (R_1^2 + R_2^2) / 2. The cap keeps float lanes' running
@@ -139,28 +142,29 @@ std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Pr
         return std::array<double, 4>{a.real(), a.imag(), b.real(), b.imag()};
     };
     LaneFractal lanes;
-    lanes.origin = duplex(other->slice.fromWorld(Point3d(0, 0, 0)));
+    const Slice& slice = fractal.slice();
+    lanes.origin = duplex(slice.fromWorld(Point3d(0, 0, 0)));
     for (size_t axis = 0; axis < 3; ++axis)
-        lanes.axes[axis] = duplex(other->slice.tangents()[axis]);
+        lanes.axes[axis] = duplex(slice.tangents()[axis]);
     lanes.degree = formula.degree();
     lanes.maxIterations = set.maxIterations();
     lanes.bailoutSquared = lanes.escapeRadiusSquared = bailoutSquared;
-    lanes.stepScale = other->slice.stepScale();
+    lanes.stepScale = slice.stepScale();
     lanes.precision = precision;
-    lanes.boundingRadius = other->slice.boundingRadius(set.bailout());
+    lanes.boundingRadius = slice.boundingRadius(set.bailout());
     lanes.bicomplex = std::move(bicomplex);
     return lanes;
 }
 
 std::optional<LaneFractal> LaneFractal::fromOctonion(const Scene& scene, const Fractal& fractal,
                                                      Precision precision) {
-    const HypercomplexFractal* other = fractal.hypercomplex();
-    if (!other || other->set.formula().algebra() != Algebra::kOctonion) return std::nullopt;
-    std::optional<OctonionFold> fold = foldOctonion(scene.fractal.formula, *other);
+    const HypercomplexJuliaSet* other = fractal.setAs<HypercomplexJuliaSet>();
+    if (!other || !algebraRules(other->algebra()).foldsOntoQuaternions) return std::nullopt;
+    std::optional<OctonionFold> fold = foldOctonion(scene.fractal.formula, *other, fractal.slice());
     if (!fold) return std::nullopt;
     // The folded formula's lanes, then the fold's rows in place of the slice map.
     const Fractal folded(
-        JuliaSet(fold->polynomial, scene.fractal.maxIterations, scene.fractal.bailout),
+        QuaternionJuliaSet(fold->polynomial, scene.fractal.maxIterations, scene.fractal.bailout),
         Slice(SliceSettings{}));
     LaneFractal lanes = from(folded, precision);
     if (lanes.squareMap) return std::nullopt;  // (a conjugate would multiply the rows)
@@ -178,8 +182,8 @@ std::optional<LaneFractal> LaneFractal::fromOctonion(const Scene& scene, const F
         }
     }
     lanes.folded = true;
-    lanes.stepScale = other->slice.stepScale();
-    lanes.boundingRadius = other->slice.boundingRadius(std::sqrt(lanes.bailoutSquared));
+    lanes.stepScale = fractal.slice().stepScale();
+    lanes.boundingRadius = fractal.slice().boundingRadius(std::sqrt(lanes.bailoutSquared));
     return lanes;
 }
 

@@ -66,7 +66,7 @@ struct LaneFractal {
         // pull-back (DuplexComponent::pullBackLimit); the others ask the reference.
         std::array<bool, 2> binomial{};
         std::array<double, 2> inverseLead{}, pullBackLimit{};
-        std::shared_ptr<const HypercomplexFractal> reference;
+        std::shared_ptr<const JuliaSet> reference;
     };
     std::optional<Bicomplex> bicomplex;
     // An octonion real form folded onto the quaternions (octonion_fold.h) through a slice on
@@ -201,7 +201,7 @@ void estimatePoints(const LaneFractal& fractal, const PointBatch& points,
 void estimateDistances(const LaneFractal& fractal, const PointBatch& points,
                        std::vector<double>& distances, LaneCounters& counters);
 
-// The M of a point's analytic normal (JuliaSet::gradientIterations): the iterations of its
+// The M of a point's analytic normal (QuaternionJuliaSet::gradientIterations): the iterations of its
 // estimate, maxIterations - 1 for points inside.
 inline int gradientIterationsOf(const PointEstimate& estimate, int maxIterations) {
     return estimate.inside ? maxIterations - 1 : estimate.iterations;

@@ -90,7 +90,7 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
                                          });
 }
 
-// Fractal::normal / JuliaSet::potentialGradient for a batch of points, M_i iterations in lane i
+// Fractal::normal / QuaternionJuliaSet::potentialGradient for a batch of points, M_i iterations in lane i
 // (iterations[i]; without `iterations`, the M that each point's estimate reaches, found on the
 // way: float lanes of z^2 + c with a certified bailout only, LaneConstants::threeNumbers): the
 // gradient of the potential along the slice's axes, then the outward unit normal.

@@ -1,0 +1,54 @@
+// The filled Julia set K_N of a formula in one of the algebras of section 2.3 (algebra/
+// hypercomplex.h): the one interface through which every consumer (Fractal, and with it the
+// marchers, shading, the mesher, the planes and the explorer) asks for membership, distances and
+// normals, at points of the algebra. Which implementation draws an algebra, and with which
+// estimate, escape radius and bailout, is decided once, by the algebra's row of
+// algebraRules() (algebra_rules.h):
+// - QuaternionJuliaSet (distance.h): the quaternions, from the formula multiplied out, with the
+//   fast forms s z^d + c that the SIMD lanes share;
+// - HypercomplexJuliaSet (hypercomplex_julia.h): the other algebras, from the formula evaluated
+//   through the algebra's multiplication table.
+#pragma once
+
+#include <array>
+
+#include "quaternia/algebra/hypercomplex.h"
+#include "quaternia/fractal/distance_estimate.h"
+
+namespace quaternia {
+
+// How a set's distance relates to the true distance to K_N.
+enum class DistanceKind {
+    kEstimate,  // the escape-time estimate (quaternions, octonions, bicomplex numbers)
+    kLipschitz  // a proven lower bound, often far below the distance: march by fixed steps
+};
+
+class JuliaSet {
+  public:
+    virtual ~JuliaSet() = default;
+
+    virtual Algebra algebra() const = 0;
+    // What estimate() returns: an estimate to march by, or a proven but short distance that the
+    // renderer combines with Algorithm 2's fixed steps.
+    virtual DistanceKind distanceKind() const = 0;
+    // The estimate at z0 (components past the algebra's dimension are 0).
+    virtual DistanceEstimate estimate(const Hypercomplex& z0) const = 0;
+    virtual bool contains(const Hypercomplex& z0) const = 0;
+    // ln|z_M| after exactly M iterations (or where it overflows): the potential whose gradient is
+    // the normal; and the M the normal takes at z0.
+    virtual double logRadiusAfter(const Hypercomplex& z0, int iterations) const = 0;
+    virtual int gradientIterations(const Hypercomplex& z0) const = 0;
+    // The gradient of |z_M|^2 along the three directions whose images in the algebra are
+    // `tangents` (the slice's), M = gradientIterations(z0): a normal of the potential's level
+    // sets, from one pass through the Jacobians of p.
+    virtual std::array<double, 3> potentialGradient(
+        const Hypercomplex& z0, const std::array<Hypercomplex, 3>& tangents) const = 0;
+
+    virtual int maxIterations() const = 0;
+    // Membership radius: K_N lies in the ball of this radius.
+    virtual double bailout() const = 0;
+    // Where orbits are certain to escape (the bailout where no radius is certain).
+    virtual double escapeRadius() const = 0;
+};
+
+}  // namespace quaternia
