@@ -45,6 +45,8 @@ EngineDifference compareEngines(Scene scene) {
     const RenderResult reference = render(scene);
     EXPECT_STREQ(reference.stats.engine, "scalar");
     EXPECT_STRNE(lanes.stats.engine, "scalar");
+    // Not two empty pictures: every scene here shows the set.
+    EXPECT_GT(reference.stats.hits, reference.stats.rays / 50);
     EngineDifference d;
     const int width = scene.render.width, height = scene.render.height;
     int far = 0;

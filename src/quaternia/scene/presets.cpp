@@ -34,8 +34,11 @@ const std::vector<Preset>& scenePresets() {
         {"two-sided",
          "(1+2i) z (0.5-k) z + c: coefficients in different complex planes, a truly "
          "quaternion map",
+         // |1+2i| |0.5-k| = 2.5 scales the set down by as much, and c with it: the default c,
+         // 2.5 times farther out than a c of this size, leaves only dust (nothing drawn).
          {{"fractal.formula", std::string("(1+2i) z (0.5-k) z + c")},
-          {"fractal.c", std::vector{-0.2, 0.6, 0.2, 0.2}}}},
+          {"fractal.c", std::vector{-0.1, 0.25, 0.1, 0.1}},
+          {"camera.fov", 18.0}}},
         // Looks (materials and lights, issue 20): the default set, as studio photographs.
         {"studio",
          "a look: the set on a grey floor under a soft key light and a cool rim light",
