@@ -28,14 +28,17 @@
 #include <string_view>
 #include <vector>
 
+#include "quaternia/algebra/element.h"
+
 namespace quaternia {
 
 enum class Algebra { kQuaternion, kBicomplex, kCoquaternion, kBiquaternion, kOctonion };
 
 constexpr int kMaxAlgebraDimension = 8;
 
-// Components of an element along the algebra's basis; those past its dimension are zero.
-using Hypercomplex = std::array<double, kMaxAlgebraDimension>;
+// Components of an element along the algebra's basis (element.h); those past its dimension are
+// zero.
+using Hypercomplex = Element<double, kMaxAlgebraDimension>;
 
 // Every algebra, in the order of the enum; names as the scene file spells them.
 const std::vector<Algebra>& allAlgebras();

@@ -18,21 +18,24 @@
 #include <ostream>
 #include <type_traits>
 
+#include "quaternia/algebra/element.h"
+
 namespace quaternia {
 
+// The 4-dimensional element of element.h, the quaternions' (Hamilton's product, below).
 template <typename T>
-struct QuaternionT {
+struct Element<T, 4> {
     T w{}, x{}, y{}, z{};  // components along 1, i, j, k
 
-    constexpr QuaternionT() = default;
+    constexpr Element() = default;
     // By reference: a lane vector passed by value to a function compiled without its target
     // changes the ABI (GCC's -Wpsabi note).
-    constexpr QuaternionT(const T& real) : w(real) {}  // NOLINT: reals embed in H
-    constexpr QuaternionT(const T& w_, const T& x_, const T& y_, const T& z_)
+    constexpr Element(const T& real) : w(real) {}  // NOLINT: reals embed in H
+    constexpr Element(const T& w_, const T& x_, const T& y_, const T& z_)
         : w(w_), x(x_), y(y_), z(z_) {}
 
     template <typename U>
-    constexpr explicit QuaternionT(const QuaternionT<U>& q)
+    constexpr explicit Element(const Element<U, 4>& q)
         : w(T(q.w)), x(T(q.x)), y(T(q.y)), z(T(q.z)) {}
 
     constexpr T operator[](int index) const {
@@ -42,20 +45,22 @@ struct QuaternionT {
         return index == 0 ? w : index == 1 ? x : index == 2 ? y : z;
     }
 
-    constexpr QuaternionT& operator+=(const QuaternionT& q) {
+    constexpr Element& operator+=(const Element& q) {
         w += q.w, x += q.x, y += q.y, z += q.z;
         return *this;
     }
-    constexpr QuaternionT& operator-=(const QuaternionT& q) {
+    constexpr Element& operator-=(const Element& q) {
         w -= q.w, x -= q.x, y -= q.y, z -= q.z;
         return *this;
     }
-    constexpr QuaternionT& operator*=(T s) {
+    constexpr Element& operator*=(T s) {
         w *= s, x *= s, y *= s, z *= s;
         return *this;
     }
 };
 
+template <typename T>
+using QuaternionT = Element<T, 4>;
 using Quaternion = QuaternionT<double>;
 using Quaternionf = QuaternionT<float>;
 
