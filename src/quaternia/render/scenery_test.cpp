@@ -1,9 +1,10 @@
 // The scene around the set against optics, on the unit ball (the set of z^2 + 0): Fresnel and
 // Snell at a surface, a mirror ball that shows the ground where ray optics puts it, a glass
 // ball that inverts the background as a ball lens does, white materials in a white world that
-// stay white, the ground as a shadow catcher, extra lights, glow.
+// stay white, the ground as a shadow catcher, extra lights, glow: on both engines.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <random>
@@ -20,6 +21,16 @@ namespace quaternia {
 namespace {
 
 constexpr int kSize = 81;
+
+// Both engines draw the scene around the set (path_waves.h): the tests below hold each to optics.
+constexpr std::array kEngines{RenderEngine::Simd, RenderEngine::Scalar};
+const char* nameOf(RenderEngine engine) {
+    return engine == RenderEngine::Simd ? "simd" : "scalar";
+}
+Scene on(Scene scene, RenderEngine engine) {
+    scene.render.engine = engine;
+    return scene;
+}
 
 // The unit ball seen from `eye`, lit by nothing (its own colour black), gamma 1, opaque.
 Scene darkBall(const Vector3d& eye) {
@@ -88,36 +99,39 @@ TEST(Optics, RefractionObeysSnellsLaw) {
 // A mirror ball over a red floor under a blue sky: every pixel of the ball shows red where its
 // reflected ray meets the plane y = -1.5 and blue where it goes up, in exactly those colours.
 TEST(Mirror, BallReflectsTheGroundWhereRayOpticsPutsIt) {
-    Scene scene = darkBall({0, 0.8, -4});
-    scene.material.reflectivity = 1;  // Schlick's reflectance is then 1 at every angle
-    scene.material.maxDepth = 2;
-    scene.ground.enabled = true;
-    scene.ground.height = -1.5;
-    scene.ground.color = {1, 0, 0};
-    scene.shading.ambient = 1;  // the floor's colour, evenly lit
-    scene.shading.backgroundTop = scene.shading.backgroundBottom = {0, 0, 1};
-    const RenderResult result = render(scene);
-    const Camera camera(scene.camera, kSize, kSize);
-    int checked = 0, red = 0, wrong = 0;
-    for (int py = 0; py < kSize; ++py) {
-        for (int px = 0; px < kSize; ++px) {
-            auto hit = ballHit(camera, px, py);
-            if (!hit) continue;
-            const Vector3d r = reflect(hit->ray.direction, Vector3d(hit->point));
-            if (std::abs(r.y) < 0.03) continue;  // the horizon: a pixel's guess
-            const bool floor = r.y < 0;
-            const Rgba& c = result.image.at(px, py);
-            const bool ok = floor ? (std::abs(c.r - 1) < 2e-3 && c.b < 2e-3)
-                                  : (std::abs(c.b - 1) < 2e-3 && c.r < 2e-3);
-            ++checked;
-            red += floor;
-            wrong += !ok;
+    for (RenderEngine engine : kEngines) {
+        SCOPED_TRACE(nameOf(engine));
+        Scene scene = darkBall({0, 0.8, -4});
+        scene.material.reflectivity = 1;  // Schlick's reflectance is then 1 at every angle
+        scene.material.maxDepth = 2;
+        scene.ground.enabled = true;
+        scene.ground.height = -1.5;
+        scene.ground.color = {1, 0, 0};
+        scene.shading.ambient = 1;  // the floor's colour, evenly lit
+        scene.shading.backgroundTop = scene.shading.backgroundBottom = {0, 0, 1};
+        const RenderResult result = render(on(scene, engine));
+        const Camera camera(scene.camera, kSize, kSize);
+        int checked = 0, red = 0, wrong = 0;
+        for (int py = 0; py < kSize; ++py) {
+            for (int px = 0; px < kSize; ++px) {
+                auto hit = ballHit(camera, px, py);
+                if (!hit) continue;
+                const Vector3d r = reflect(hit->ray.direction, Vector3d(hit->point));
+                if (std::abs(r.y) < 0.03) continue;  // the horizon: a pixel's guess
+                const bool floor = r.y < 0;
+                const Rgba& c = result.image.at(px, py);
+                const bool ok = floor ? (std::abs(c.r - 1) < 2e-3 && c.b < 2e-3)
+                                      : (std::abs(c.b - 1) < 2e-3 && c.r < 2e-3);
+                ++checked;
+                red += floor;
+                wrong += !ok;
+            }
         }
+        EXPECT_GT(checked, 1500);
+        EXPECT_GT(red, 500);
+        EXPECT_GT(checked - red, 500);
+        EXPECT_LE(wrong, checked / 500) << wrong << " of " << checked;
     }
-    EXPECT_GT(checked, 1500);
-    EXPECT_GT(red, 500);
-    EXPECT_GT(checked - red, 500);
-    EXPECT_LE(wrong, checked / 500) << wrong << " of " << checked;
 }
 
 // A glass ball (index 1.5) against a sky that brightens upwards, 0.5 + 0.5 y of the direction:
@@ -125,137 +139,150 @@ TEST(Mirror, BallReflectsTheGroundWhereRayOpticsPutsIt) {
 // Each pixel shows the sky along the ray's analytic exit (two refractions), give or take the
 // few percent of Fresnel reflection.
 TEST(Glass, BallLensInvertsTheBackground) {
-    Scene scene = darkBall({0, 0, -4});
-    scene.material.transparency = 1;
-    scene.material.ior = 1.5;
-    scene.shading.backgroundTop = {1, 1, 1};
-    scene.shading.backgroundBottom = {0, 0, 0};
-    const RenderResult result = render(scene);
-    const Camera camera(scene.camera, kSize, kSize);
-    int checked = 0, inverted = 0, far = 0;
-    for (int py = 0; py < kSize; ++py) {
-        for (int px = 0; px < kSize; ++px) {
-            auto hit = ballHit(camera, px, py, 0.3);  // the centre, where Fresnel is small
-            if (!hit) continue;
-            const Vector3d n(hit->point);
-            const Vector3d inside = *refract(hit->ray.direction, n, 1, 1.5);
-            // The chord of the unit sphere from the entry point along `inside`.
-            const Point3d exit = hit->point + inside * (-2 * dot(hit->point, inside));
-            auto out = refract(inside, -Vector3d(exit), 1.5, 1);
-            ASSERT_TRUE(out);
-            // The sky along the way out, and what the Fresnel reflections at entry and exit
-            // may add: the entry's reflection of the sky, the exit's internal reflection of
-            // anything between black and white.
-            auto sky = [](const Vector3d& v) { return 0.5 + 0.5 * v.y; };
-            const double entry = fresnelDielectric(-dot(hit->ray.direction, n), 1, 1.5);
-            const double exitReflectance = fresnelDielectric(dot(inside, Vector3d(exit)), 1.5, 1);
-            const double least = entry * sky(reflect(hit->ray.direction, n)) +
-                                 (1 - entry) * (1 - exitReflectance) * sky(*out);
-            const double most = least + (1 - entry) * exitReflectance;
-            const double seen = result.image.at(px, py).g;
-            ++checked;
-            far += seen < least - 0.01 || seen > most + 0.01;
-            // Inverted: the exit turns to the other side of the axis than the entry.
-            if (std::abs(hit->ray.direction.y) > 0.02)
-                inverted += (out->y > 0) != (hit->ray.direction.y > 0);
+    for (RenderEngine engine : kEngines) {
+        SCOPED_TRACE(nameOf(engine));
+        Scene scene = darkBall({0, 0, -4});
+        scene.material.transparency = 1;
+        scene.material.ior = 1.5;
+        scene.shading.backgroundTop = {1, 1, 1};
+        scene.shading.backgroundBottom = {0, 0, 0};
+        const RenderResult result = render(on(scene, engine));
+        const Camera camera(scene.camera, kSize, kSize);
+        int checked = 0, inverted = 0, far = 0;
+        for (int py = 0; py < kSize; ++py) {
+            for (int px = 0; px < kSize; ++px) {
+                auto hit = ballHit(camera, px, py, 0.3);  // the centre, where Fresnel is small
+                if (!hit) continue;
+                const Vector3d n(hit->point);
+                const Vector3d inside = *refract(hit->ray.direction, n, 1, 1.5);
+                // The chord of the unit sphere from the entry point along `inside`.
+                const Point3d exit = hit->point + inside * (-2 * dot(hit->point, inside));
+                auto out = refract(inside, -Vector3d(exit), 1.5, 1);
+                ASSERT_TRUE(out);
+                // The sky along the way out, and what the Fresnel reflections at entry and exit
+                // may add: the entry's reflection of the sky, the exit's internal reflection of
+                // anything between black and white.
+                auto sky = [](const Vector3d& v) { return 0.5 + 0.5 * v.y; };
+                const double entry = fresnelDielectric(-dot(hit->ray.direction, n), 1, 1.5);
+                const double exitReflectance =
+                    fresnelDielectric(dot(inside, Vector3d(exit)), 1.5, 1);
+                const double least = entry * sky(reflect(hit->ray.direction, n)) +
+                                     (1 - entry) * (1 - exitReflectance) * sky(*out);
+                const double most = least + (1 - entry) * exitReflectance;
+                const double seen = result.image.at(px, py).g;
+                ++checked;
+                far += seen < least - 0.01 || seen > most + 0.01;
+                // Inverted: the exit turns to the other side of the axis than the entry.
+                if (std::abs(hit->ray.direction.y) > 0.02)
+                    inverted += (out->y > 0) != (hit->ray.direction.y > 0);
+            }
         }
+        EXPECT_GT(checked, 1000);
+        EXPECT_LE(far, checked / 100) << far << " of " << checked;
+        EXPECT_GT(inverted, checked / 2);
     }
-    EXPECT_GT(checked, 1000);
-    EXPECT_LE(far, checked / 100) << far << " of " << checked;
-    EXPECT_GT(inverted, checked / 2);
 }
 
 // Clear of refraction (index 1: no Fresnel reflection, no bending), a ball that absorbs
 // passes exp(-absorption x L) of the white background per channel, L the chord of its pixel's
 // ray: Beer-Lambert over the way inside, found by the fixed steps and the bisection.
 TEST(Glass, AbsorbsByBeerLambertAlongTheChord) {
-    Scene scene = darkBall({0, 0, -4});
-    scene.material.transparency = 1;
-    scene.material.ior = 1;
-    scene.material.absorption = {0.5, 1, 2};
-    scene.shading.backgroundTop = scene.shading.backgroundBottom = {1, 1, 1};
-    const RenderResult result = render(scene);
-    const Camera camera(scene.camera, kSize, kSize);
-    int checked = 0;
-    double worst = 0;
-    for (int py = 0; py < kSize; ++py) {
-        for (int px = 0; px < kSize; ++px) {
-            auto hit = ballHit(camera, px, py, 0.05);
-            if (!hit) continue;
-            const double chord = -2 * dot(hit->point, hit->ray.direction);
-            const Rgba& c = result.image.at(px, py);
-            worst = std::max({worst, std::abs(c.r - std::exp(-0.5 * chord)),
-                              std::abs(c.g - std::exp(-1 * chord)),
-                              std::abs(c.b - std::exp(-2 * chord))});
-            ++checked;
+    for (RenderEngine engine : kEngines) {
+        SCOPED_TRACE(nameOf(engine));
+        Scene scene = darkBall({0, 0, -4});
+        scene.material.transparency = 1;
+        scene.material.ior = 1;
+        scene.material.absorption = {0.5, 1, 2};
+        scene.shading.backgroundTop = scene.shading.backgroundBottom = {1, 1, 1};
+        const RenderResult result = render(on(scene, engine));
+        const Camera camera(scene.camera, kSize, kSize);
+        int checked = 0;
+        double worst = 0;
+        for (int py = 0; py < kSize; ++py) {
+            for (int px = 0; px < kSize; ++px) {
+                auto hit = ballHit(camera, px, py, 0.05);
+                if (!hit) continue;
+                const double chord = -2 * dot(hit->point, hit->ray.direction);
+                const Rgba& c = result.image.at(px, py);
+                worst = std::max({worst, std::abs(c.r - std::exp(-0.5 * chord)),
+                                  std::abs(c.g - std::exp(-1 * chord)),
+                                  std::abs(c.b - std::exp(-2 * chord))});
+                ++checked;
+            }
         }
+        EXPECT_GT(checked, 1000);
+        EXPECT_LT(worst, 0.01);
     }
-    EXPECT_GT(checked, 1000);
-    EXPECT_LT(worst, 0.01);
 }
 
 // A white furnace: a lossless mirror and clear glass in a white world are white all over.
 TEST(Furnace, LosslessMaterialsInAWhiteWorldStayWhite) {
-    for (bool glass : {false, true}) {
-        Scene scene = darkBall({0, 0.5, -4});
-        (glass ? scene.material.transparency : scene.material.reflectivity) = 1;
-        scene.shading.backgroundTop = scene.shading.backgroundBottom = {1, 1, 1};
-        const RenderResult result = render(scene);
-        double worst = 0;
-        for (int py = 0; py < kSize; ++py) {
-            for (int px = 0; px < kSize; ++px) {
-                const Rgba& c = result.image.at(px, py);
-                worst = std::max(
-                    {worst, std::abs(c.r - 1.0), std::abs(c.g - 1.0), std::abs(c.b - 1.0)});
+    for (RenderEngine engine : kEngines) {
+        SCOPED_TRACE(nameOf(engine));
+        for (bool glass : {false, true}) {
+            Scene scene = darkBall({0, 0.5, -4});
+            (glass ? scene.material.transparency : scene.material.reflectivity) = 1;
+            scene.shading.backgroundTop = scene.shading.backgroundBottom = {1, 1, 1};
+            const RenderResult result = render(on(scene, engine));
+            double worst = 0;
+            for (int py = 0; py < kSize; ++py) {
+                for (int px = 0; px < kSize; ++px) {
+                    const Rgba& c = result.image.at(px, py);
+                    worst = std::max(
+                        {worst, std::abs(c.r - 1.0), std::abs(c.g - 1.0), std::abs(c.b - 1.0)});
+                }
             }
+            EXPECT_LT(worst, 2e-3) << (glass ? "glass" : "mirror");
         }
-        EXPECT_LT(worst, 2e-3) << (glass ? "glass" : "mirror");
     }
 }
 
 // The ground as a shadow catcher under a light straight above: black with alpha 1 in the
 // ball's shadow (the disc x^2 + z^2 < 1 of the floor) and nothing elsewhere; id 2 in the passes.
 TEST(Ground, ShadowCatcherIsTheShadowAlone) {
-    Scene scene = darkBall({0, 2, -4});
-    scene.render.alpha = AlphaMode::Coverage;
-    scene.shading.lightDirection = {0, 1, 0};
-    scene.shading.lightIntensity = 1;
-    scene.shading.shadows = Shadows::Hard;
-    scene.ground.enabled = true;
-    scene.ground.height = -1.2;
-    scene.ground.shadowCatcher = true;
-    RenderOptions options;
-    options.passes = true;
-    const RenderResult result = render(scene, options);
-    const Camera camera(scene.camera, kSize, kSize);
-    int shadowed = 0, open = 0, wrong = 0;
-    for (int py = 0; py < kSize; ++py) {
-        for (int px = 0; px < kSize; ++px) {
-            const Ray ray = camera.generateRay(px + 0.5, py + 0.5);
-            const size_t i = size_t(py) * kSize + size_t(px);
-            if (ballHit(camera, px, py, -0.05)) {  // the ball, and its outline
-                if (ballHit(camera, px, py, 0.05)) {
-                    EXPECT_EQ(result.passes.object[i], 1u);
+    for (RenderEngine engine : kEngines) {
+        SCOPED_TRACE(nameOf(engine));
+        Scene scene = darkBall({0, 2, -4});
+        scene.render.alpha = AlphaMode::Coverage;
+        scene.shading.lightDirection = {0, 1, 0};
+        scene.shading.lightIntensity = 1;
+        scene.shading.shadows = Shadows::Hard;
+        scene.ground.enabled = true;
+        scene.ground.height = -1.2;
+        scene.ground.shadowCatcher = true;
+        RenderOptions options;
+        options.passes = true;
+        const RenderResult result = render(on(scene, engine), options);
+        const Camera camera(scene.camera, kSize, kSize);
+        int shadowed = 0, open = 0, wrong = 0;
+        for (int py = 0; py < kSize; ++py) {
+            for (int px = 0; px < kSize; ++px) {
+                const Ray ray = camera.generateRay(px + 0.5, py + 0.5);
+                const size_t i = size_t(py) * kSize + size_t(px);
+                if (ballHit(camera, px, py, -0.05)) {  // the ball, and its outline
+                    if (ballHit(camera, px, py, 0.05)) {
+                        EXPECT_EQ(result.passes.object[i], 1u);
+                    }
+                    continue;
                 }
-                continue;
-            }
-            if (!(ray.direction.y < 0)) continue;
-            const Point3d floor = ray.at((-1.2 - ray.origin.y) / ray.direction.y);
-            const double r2 = floor.x * floor.x + floor.z * floor.z;
-            if (std::abs(r2 - 1) < 0.15) continue;  // the shadow's edge
-            const Rgba& c = result.image.at(px, py);
-            if (r2 < 1) {
-                ++shadowed;
-                wrong += !(c.a > 0.999 && c.r < 1e-3 && result.passes.object[i] == 2u);
-            } else {
-                ++open;
-                wrong += !(c.a < 1e-3);
+                if (!(ray.direction.y < 0)) continue;
+                const Point3d floor = ray.at((-1.2 - ray.origin.y) / ray.direction.y);
+                const double r2 = floor.x * floor.x + floor.z * floor.z;
+                if (std::abs(r2 - 1) < 0.15) continue;  // the shadow's edge
+                const Rgba& c = result.image.at(px, py);
+                if (r2 < 1) {
+                    ++shadowed;
+                    wrong += !(c.a > 0.999 && c.r < 1e-3 && result.passes.object[i] == 2u);
+                } else {
+                    ++open;
+                    wrong += !(c.a < 1e-3);
+                }
             }
         }
+        EXPECT_GT(shadowed, 200);
+        EXPECT_GT(open, 1000);
+        EXPECT_EQ(wrong, 0);
     }
-    EXPECT_GT(shadowed, 200);
-    EXPECT_GT(open, 1000);
-    EXPECT_EQ(wrong, 0);
 }
 
 // Camera rays that see the ground and nothing else end there without the paths' bookkeeping
@@ -358,21 +385,24 @@ TEST(Lights, ExtraPointLightFallsWithTheInverseSquare) {
 
 // The glow colours the background about the set and fades with the distance from it.
 TEST(Glow, HaloAboutTheSilhouetteFadesOutwards) {
-    Scene scene = darkBall({0, 0, -4});
-    scene.shading.glowIntensity = 1;
-    scene.shading.glowColor = {0, 1, 0};
-    const Image image = render(scene).image;
-    const int centre = kSize / 2;
-    // Along the middle row, outwards from the ball's edge.
-    const Camera camera(scene.camera, kSize, kSize);
-    int x = centre;
-    while (x < kSize && ballHit(camera, x, centre, 0.0))
-        ++x;
-    ASSERT_LT(x + 6, kSize);
-    EXPECT_GT(image.at(x, centre).g, image.at(x + 5, centre).g);
-    EXPECT_GT(image.at(x, centre).g, 0.05);
-    EXPECT_EQ(image.at(x, centre).r, 0);
-    EXPECT_EQ(image.at(0, 0).g, 0);  // the corner: the ray misses the bounding sphere
+    for (RenderEngine engine : kEngines) {
+        SCOPED_TRACE(nameOf(engine));
+        Scene scene = darkBall({0, 0, -4});
+        scene.shading.glowIntensity = 1;
+        scene.shading.glowColor = {0, 1, 0};
+        const Image image = render(on(scene, engine)).image;
+        const int centre = kSize / 2;
+        // Along the middle row, outwards from the ball's edge.
+        const Camera camera(scene.camera, kSize, kSize);
+        int x = centre;
+        while (x < kSize && ballHit(camera, x, centre, 0.0))
+            ++x;
+        ASSERT_LT(x + 6, kSize);
+        EXPECT_GT(image.at(x, centre).g, image.at(x + 5, centre).g);
+        EXPECT_GT(image.at(x, centre).g, 0.05);
+        EXPECT_EQ(image.at(x, centre).r, 0);
+        EXPECT_EQ(image.at(0, 0).g, 0);  // the corner: the ray misses the bounding sphere
+    }
 }
 
 }  // namespace
