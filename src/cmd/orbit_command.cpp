@@ -1,6 +1,7 @@
 #include "cmd/orbit_command.h"
 
 #include <cstdio>
+#include <variant>
 
 #include "cmd/dynamics_input.h"
 #include "quaternia/algebra/formula.h"
@@ -209,13 +210,8 @@ int runHypercomplexOrbit(const OrbitCommandOptions& options, const Scene& scene)
             restrictToComplexPlane(compileFormula(scene.fractal.formula, scene.fractal.c));
         if (restriction) k = connectedness(restriction->polynomial, scene.orbit.maxIterations);
     }
-    if (set.formula().dimension() == 4)
-        return report(
-            options, scene,
-            analyzeHypercomplexOrbit<4>(set.formula(), set.escapeRadius(), z0, orbitOptions), k);
-    return report(options, scene,
-                  analyzeHypercomplexOrbit<8>(set.formula(), set.escapeRadius(), z0, orbitOptions),
-                  k);
+    return std::visit([&](const auto& result) { return report(options, scene, result, k); },
+                      analyzeOrbit(set, z0, orbitOptions));
 }
 
 Scene orbitScene(const OrbitCommandOptions& options) {

@@ -375,6 +375,17 @@ HypercomplexOrbitResult<N> analyzeHypercomplexOrbit(const HypercomplexFormula& f
     return orbitOf(HypercomplexMap<N>{formula}, escapeRadius, z0, options);
 }
 
+AnyOrbitResult analyzeOrbit(const JuliaSet& set, const Hypercomplex& z0,
+                            const OrbitOptions& options) {
+    if (const auto* quaternion = dynamic_cast<const QuaternionJuliaSet*>(&set))
+        return analyzeOrbit(quaternion->polynomial(), Quaternion(z0[0], z0[1], z0[2], z0[3]),
+                            options);
+    const auto& other = dynamic_cast<const HypercomplexJuliaSet&>(set);
+    if (other.formula().dimension() == 4)
+        return analyzeHypercomplexOrbit<4>(other.formula(), other.escapeRadius(), z0, options);
+    return analyzeHypercomplexOrbit<8>(other.formula(), other.escapeRadius(), z0, options);
+}
+
 template Matrix<4> hypercomplexJacobian<4>(const HypercomplexFormula&, const Hypercomplex&);
 template Matrix<8> hypercomplexJacobian<8>(const HypercomplexFormula&, const Hypercomplex&);
 template HypercomplexOrbitResult<4> analyzeHypercomplexOrbit<4>(const HypercomplexFormula&, double,

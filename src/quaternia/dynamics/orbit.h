@@ -36,12 +36,15 @@
 #include <complex>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "quaternia/algebra/complex_polynomial.h"
 #include "quaternia/algebra/hypercomplex_formula.h"
 #include "quaternia/algebra/polynomial.h"
 #include "quaternia/dynamics/cycle.h"
+#include "quaternia/fractal/distance.h"
+#include "quaternia/fractal/hypercomplex_julia.h"
 
 namespace quaternia {
 
@@ -116,6 +119,16 @@ HypercomplexOrbitResult<N> analyzeHypercomplexOrbit(const HypercomplexFormula& f
 // The Jacobian of the formula at z: column a is the derivative along e_a (N = dimension()).
 template <std::size_t N>
 Matrix<N> hypercomplexJacobian(const HypercomplexFormula& formula, const Hypercomplex& z);
+
+// The orbit of z0 (components past the algebra's dimension 0) under the map of `set` in its own
+// algebra (fractal/julia_set.h), escaping beyond the set's escape radius: the one analysis
+// above, whichever the algebra, through the quaternions' polynomial (QuaternionJuliaSet, as
+// analyzeOrbit) or the formula's multiplication table (HypercomplexJuliaSet, as
+// analyzeHypercomplexOrbit with its dimension).
+using AnyOrbitResult =
+    std::variant<OrbitResult, HypercomplexOrbitResult<4>, HypercomplexOrbitResult<8>>;
+AnyOrbitResult analyzeOrbit(const JuliaSet& set, const Hypercomplex& z0,
+                            const OrbitOptions& options = {});
 
 // A complex polynomial as the quaternion polynomial sum a_k z^k with coefficients in C_i.
 Polynomial quaternionPolynomial(const ComplexPolynomial& p);

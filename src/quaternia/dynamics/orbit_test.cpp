@@ -437,3 +437,39 @@ TEST(HypercomplexOrbit, DimensionMustBeTheAlgebras) {
 
 }  // namespace
 }  // namespace quaternia
+
+namespace quaternia {
+namespace {
+
+// One analysis for every algebra (analyzeOrbit of a JuliaSet): the rabbit's interior orbit ends
+// on the same superattracting 3-cycle whether the map is the quaternions' polynomial or the same
+// formula evaluated through Hamilton's multiplication table, and the octonions and bicomplex
+// numbers, which hold the complex plane C_i as a subalgebra, find it there too.
+TEST(Orbit, OneAnalysisForEveryAlgebra) {
+    const Quaternion c(-0.122561, 0.744862, 0, 0);
+    const Hypercomplex z0{0.05, 0.02, 0, 0, 0, 0, 0, 0};
+    auto periodOf = [&](const JuliaSet& set) {
+        return std::visit(
+            [](const auto& r) {
+                EXPECT_EQ(r.fate, OrbitFate::Attracted);
+                return r.cycle ? r.cycle->period() : 0;
+            },
+            analyzeOrbit(set, z0));
+    };
+    const QuaternionJuliaSet quaternion(compileFormula("z^2 + c", c), 100, 0);
+    EXPECT_EQ(periodOf(quaternion), 3);
+    EXPECT_TRUE(std::holds_alternative<OrbitResult>(analyzeOrbit(quaternion, z0)));
+    for (Algebra algebra : {Algebra::kQuaternion, Algebra::kOctonion, Algebra::kBicomplex}) {
+        FractalSettings settings;
+        settings.formula = "z^2 + c";
+        settings.algebra = algebra;
+        settings.c = c;
+        settings.maxIterations = 100;
+        const auto set = hypercomplexJuliaSetOf(settings);
+        EXPECT_EQ(periodOf(*set), 3) << algebraName(algebra);
+        EXPECT_EQ(analyzeOrbit(*set, z0).index(), algebraDimension(algebra) == 4 ? 1u : 2u);
+    }
+}
+
+}  // namespace
+}  // namespace quaternia
