@@ -15,6 +15,8 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/algebra/formula_parse.cpp
   quaternia/algebra/formula_expand.cpp
   quaternia/algebra/formula_program.cpp
+  quaternia/algebra/formula_program_evaluate.cpp
+  quaternia/algebra/program_bounds.cpp
   quaternia/algebra/hypercomplex.cpp
   quaternia/algebra/constant_text.cpp
   quaternia/algebra/hypercomplex_formula.cpp

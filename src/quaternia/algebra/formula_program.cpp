@@ -1,8 +1,10 @@
 // The compiler of formula_program.h: one pass over the parse tree, each node becoming at most a
-// few instructions, with constants folded and equal instructions shared.
+// few instructions, equal instructions shared, and where the algebra's rules allow, constants
+// folded and products rewritten.
 #include "quaternia/algebra/formula_program.h"
 
 #include <array>
+#include <cstring>
 #include <map>
 #include <optional>
 #include <tuple>
@@ -15,61 +17,100 @@ namespace {
 
 using Op = Instruction::Op;
 
-bool isReal(const Quaternion& q) {
-    return q.x == 0 && q.y == 0 && q.z == 0;
+Hypercomplex elementOf(const Quaternion& q) {
+    return {q.w, q.x, q.y, q.z, 0, 0, 0, 0};
+}
+Quaternion quaternionOf(const Hypercomplex& a) {
+    return {a[0], a[1], a[2], a[3]};
+}
+bool isReal(const Hypercomplex& a) {
+    for (std::size_t n = 1; n < a.size(); ++n)
+        if (a[n] != 0) return false;
+    return true;
+}
+bool sameBits(const Hypercomplex& a, const Hypercomplex& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
 }
 
 class Compiler {
   public:
-    explicit Compiler(const Quaternion& c) : c_(c) {}
+    Compiler(Algebra algebra, const Hypercomplex& c)
+        : algebra_(algebra),
+          rewrites_(algebraArithmetic(algebra).rewritesArithmetic),
+          functions_(algebraArithmetic(algebra).transcendentalFunctions),
+          table_(MultiplicationTable::of(algebra)),
+          c_(c) {}
 
+    // The left operand is compiled first, so that the constants come in the order written
+    // (what complexAxis takes its axis from).
     int node(const FormulaNode& n) {
         using Kind = FormulaNode::Kind;
         switch (n.kind) {
             case Kind::kConstant:
-                return constant(n.value);
+                return constant(elementOf(n.value));
             case Kind::kC:
                 return constant(c_);
             case Kind::kZ:
                 return z();
-            case Kind::kSum:
-                return add(node(*n.left), node(*n.right));
-            case Kind::kDifference:
-                return subtract(node(*n.left), node(*n.right));
+            case Kind::kSum: {
+                const int left = node(*n.left);
+                return add(left, node(*n.right));
+            }
+            case Kind::kDifference: {
+                const int left = node(*n.left);
+                return subtract(left, node(*n.right));
+            }
             case Kind::kNegate:
                 return negate(node(*n.left));
-            case Kind::kProduct:
-                return multiply(node(*n.left), node(*n.right));
+            case Kind::kProduct: {
+                const int left = node(*n.left);
+                return multiply(left, node(*n.right));
+            }
             case Kind::kPower:
                 return power(node(*n.left), n.exponent);
             case Kind::kFunction:
             case Kind::kRealPower:
-                refuseTranscendental(n);
+                return transcendental(n);
         }
-        return constant(Quaternion());
+        return constant(Hypercomplex{});
     }
 
-    int constant(const Quaternion& value) {
-        for (std::size_t k = 0; k < constants_.size(); ++k)
-            if (constants_[k] == value) return emit({Op::kConstant, -1, -1, int(k)});
-        constants_.push_back(value);
-        return emit({Op::kConstant, -1, -1, int(constants_.size() - 1)});
+    int constant(const Hypercomplex& value) {
+        // Where arithmetic is rewritten, constants equal in value are interchangeable (0 and -0
+        // fold alike); elsewhere each keeps the formula's bits.
+        for (std::size_t k = 0; k < elements_.size(); ++k)
+            if (rewrites_ ? elements_[k] == value : sameBits(elements_[k], value))
+                return emit({Op::kConstant, -1, -1, int(k)});
+        elements_.push_back(value);
+        return emit({Op::kConstant, -1, -1, int(elements_.size() - 1)});
     }
 
     int z() { return emit({Op::kZ}); }
 
     std::vector<Instruction> instructions_;
-    std::vector<Quaternion> constants_;
+    std::vector<Hypercomplex> elements_;
     std::vector<double> factors_;
 
   private:
-    std::optional<Quaternion> value(int r) const {
-        if (instructions_[r].op != Op::kConstant) return std::nullopt;
-        return constants_[instructions_[r].index];
+    std::optional<Hypercomplex> value(int r) const {
+        if (!rewrites_ || instructions_[r].op != Op::kConstant) return std::nullopt;
+        return elements_[instructions_[r].index];
     }
     bool is(int r, double real) const {
         const auto v = value(r);
-        return v && *v == Quaternion(real);
+        return v && *v == realElement(real);
+    }
+    // The product as the program's evaluation computes it (formula_program_evaluate.cpp):
+    // Hamilton's product of quaternion.h for quaternions, the table's otherwise.
+    Hypercomplex product(const Hypercomplex& a, const Hypercomplex& b) const {
+        if (algebra_ == Algebra::kQuaternion) return elementOf(quaternionOf(a) * quaternionOf(b));
+        return table_.multiply(a, b);
+    }
+    static Hypercomplex negative(const Hypercomplex& a) {
+        Hypercomplex n;
+        for (std::size_t k = 0; k < a.size(); ++k)
+            n[k] = -a[k];
+        return n;
     }
 
   public:
@@ -86,18 +127,21 @@ class Compiler {
         return emit({Op::kSubtract, a, b});
     }
     int negate(int a) {
-        if (value(a)) return constant(-*value(a));
+        if (value(a)) return constant(negative(*value(a)));
         return emit({Op::kNegate, a});
     }
     int multiply(int a, int b) {
-        if (value(a) && value(b)) return constant(*value(a) * *value(b));
+        if (value(a) && value(b)) return constant(product(*value(a), *value(b)));
         // A real factor commutes with everything: a scaling of the other factor.
-        if (value(a) && isReal(*value(a))) return scale(b, value(a)->w);
-        if (value(b) && isReal(*value(b))) return scale(a, value(b)->w);
+        if (value(a) && isReal(*value(a))) return scale(b, (*value(a))[0]);
+        if (value(b) && isReal(*value(b))) return scale(a, (*value(b))[0]);
         // Any other constant factor is a linear map of the other factor (q x, x q), composed
-        // with the map that made it, if one did: q z r is one map, not two products.
-        if (value(a)) return linear(productMatrix(*value(a), true), b);
-        if (value(b)) return linear(productMatrix(*value(b), false), a);
+        // with the map that made it, if one did: q z r is one map, not two products. The
+        // maps are 4x4: the 4-component algebras only.
+        if (table_.dimension() == 4) {
+            if (value(a)) return linear(productMatrix(*value(a), true), b);
+            if (value(b)) return linear(productMatrix(*value(b), false), a);
+        }
         if (a == b) return emit({Op::kSquare, a});
         return emit({Op::kMultiply, a, b});
     }
@@ -106,12 +150,13 @@ class Compiler {
     using Matrix = std::array<double, 16>;  // row by row
 
     // The matrix of x -> q x (left) or x -> x q: column c is q e_c or e_c q.
-    static Matrix productMatrix(const Quaternion& q, bool left) {
-        const Quaternion basis[4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+    Matrix productMatrix(const Hypercomplex& q, bool left) const {
         Matrix m{};
         for (int c = 0; c < 4; ++c) {
-            const Quaternion column = left ? q * basis[c] : basis[c] * q;
-            m[0 + c] = column.w, m[4 + c] = column.x, m[8 + c] = column.y, m[12 + c] = column.z;
+            const Hypercomplex basis = basisElement(c);
+            const Hypercomplex column = left ? product(q, basis) : product(basis, q);
+            for (int r = 0; r < 4; ++r)
+                m[r * 4 + c] = column[r];
         }
         return m;
     }
@@ -135,7 +180,7 @@ class Compiler {
     }
 
     int scale(int a, double factor) {
-        if (factor == 0) return constant(Quaternion());
+        if (factor == 0) return constant(Hypercomplex{});
         if (factor == 1) return a;
         if (factor == -1) return negate(a);
         if (instructions_[a].op == Op::kLinear) {  // folded into the map
@@ -152,15 +197,30 @@ class Compiler {
         return emit({Op::kScale, a, -1, int(k)});
     }
 
-  private:
-    // x^n by repeated squaring; x^0 = 1, as the expansion has it for 0^0.
+    // x^n by repeated squaring where arithmetic is rewritten (x^0 = 1, as the expansion has it
+    // for 0^0); otherwise one instruction, x (x (... x)) as the table has always taken it.
     int power(int x, int n) {
-        int result = constant(Quaternion(1));
+        if (!rewrites_) return emit({Op::kPower, x, -1, n});
+        int result = constant(realElement(1));
         for (int base = x; n > 0; n >>= 1) {
             if (n & 1) result = multiply(result, base);
             if (n > 1) base = multiply(base, base);
         }
         return result;
+    }
+
+    // A function or real power: refused (before its operand is compiled, so that the outermost
+    // is named) where the algebra has none.
+    int transcendental(const FormulaNode& n) {
+        if (!functions_) refuseTranscendental(n);
+        const int x = node(*n.left);
+        if (n.kind == FormulaNode::Kind::kFunction)
+            return emit({Op::kFunction, x, -1, int(n.function)});
+        std::size_t k = 0;
+        while (k < factors_.size() && std::memcmp(&factors_[k], &n.realExponent, sizeof(double)))
+            ++k;
+        if (k == factors_.size()) factors_.push_back(n.realExponent);
+        return emit({Op::kRealPower, x, -1, int(k)});
     }
 
     // Appends `i`, or returns the register of an equal instruction already there.
@@ -171,21 +231,30 @@ class Compiler {
         return it->second;
     }
 
-    Quaternion c_;
+    Algebra algebra_;
+    bool rewrites_;
+    bool functions_;
+    const MultiplicationTable& table_;
+    Hypercomplex c_;
     std::map<std::tuple<int, int, int, int>, int> seen_;
 };
 
 }  // namespace
 
-FormulaProgram FormulaProgram::compile(const Formula& formula, const Quaternion& c) {
-    Compiler compiler(c);
+FormulaProgram FormulaProgram::compile(const Formula& formula, Algebra algebra,
+                                       const Hypercomplex& c) {
+    Compiler compiler(algebra, c);
     const int result = formula.root() ? compiler.node(*formula.root()) : compiler.constant({});
-    return assemble(compiler.instructions_, std::move(compiler.constants_),
+    return assemble(algebra, compiler.instructions_, std::move(compiler.elements_),
                     std::move(compiler.factors_), result);
 }
 
+FormulaProgram FormulaProgram::compile(const Formula& formula, const Quaternion& c) {
+    return compile(formula, Algebra::kQuaternion, elementOf(c));
+}
+
 FormulaProgram FormulaProgram::fromPolynomial(const Polynomial& polynomial) {
-    Compiler compiler(Quaternion{});
+    Compiler compiler(Algebra::kQuaternion, Hypercomplex{});
     int sum = compiler.constant({});
     for (const Term& term : polynomial.terms()) {
         // a0 z a1 z ... z ak, left to right. Real coefficients are central: their product
@@ -200,19 +269,19 @@ FormulaProgram FormulaProgram::fromPolynomial(const Polynomial& polynomial) {
             if (a.x == 0 && a.y == 0 && a.z == 0) {
                 factor *= a.w;
             } else {
-                times(compiler.constant(a));
+                times(compiler.constant(elementOf(a)));
             }
         }
-        const int one = compiler.constant(Quaternion(1));
-        sum = compiler.add(sum, compiler.multiply(compiler.constant(Quaternion(factor)),
+        const int one = compiler.constant(realElement(1));
+        sum = compiler.add(sum, compiler.multiply(compiler.constant(realElement(factor)),
                                                   product < 0 ? one : product));
     }
-    return assemble(compiler.instructions_, std::move(compiler.constants_),
+    return assemble(Algebra::kQuaternion, compiler.instructions_, std::move(compiler.elements_),
                     std::move(compiler.factors_), sum);
 }
 
-FormulaProgram FormulaProgram::assemble(const std::vector<Instruction>& all,
-                                        std::vector<Quaternion> constants,
+FormulaProgram FormulaProgram::assemble(Algebra algebra, const std::vector<Instruction>& all,
+                                        std::vector<Hypercomplex> elements,
                                         std::vector<double> factors, int result) {
     // Only what the result needs: folding and powers leave instructions nothing reads.
     std::vector<bool> live(all.size(), false);
@@ -223,6 +292,7 @@ FormulaProgram FormulaProgram::assemble(const std::vector<Instruction>& all,
         if (all[n].b >= 0) live[all[n].b] = true;
     }
     FormulaProgram program;
+    program.algebra_ = algebra;
     std::vector<int> renumbered(all.size(), -1);
     for (int n = 0; n <= result; ++n) {
         if (!live[n]) continue;
@@ -232,7 +302,9 @@ FormulaProgram FormulaProgram::assemble(const std::vector<Instruction>& all,
         renumbered[n] = int(program.instructions_.size());
         program.instructions_.push_back(i);
     }
-    program.constants_ = std::move(constants);
+    for (const Hypercomplex& a : elements)
+        program.constants_.push_back(quaternionOf(a));
+    program.elements_ = std::move(elements);
     program.factors_ = std::move(factors);
     program.result_ = renumbered[result];
     return program;

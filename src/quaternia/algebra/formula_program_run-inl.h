@@ -1,9 +1,10 @@
-// The interpreters of formula_program.h's programs, templates over the element type: runProgram
-// and runProgramWithTangents. formula_program.h includes this file into namespace quaternia; the
-// lane code (render/lanes/march_lanes-inl.h) includes it again into each SIMD target's namespace,
-// where the lane vectors' arithmetic is defined (quaternion.h says why templates for lanes are
-// defined there) and calls it by its qualified name, so that the two never compete. No include
-// guard, for that reason; each place includes it once.
+// The interpreters of formula_program.h's quaternion programs, templates over the element type:
+// runProgram and runProgramWithTangents (the other algebras' programs run through their
+// multiplication table: formula_program_evaluate.cpp). formula_program.h includes this file into
+// namespace quaternia; the lane code (render/lanes/march_lanes-inl.h) includes it again into each
+// SIMD target's namespace, where the lane vectors' arithmetic is defined (quaternion.h says why
+// templates for lanes are defined there) and calls it by its qualified name, so that the two never
+// compete. No include guard, for that reason; each place includes it once.
 
 // The linear map whose 4x4 matrix, row by row, starts at m (Instruction::Op::kLinear). Called
 // as (applyLinear)(...): the parentheses keep argument-dependent lookup from finding the other
@@ -51,6 +52,12 @@ Element runProgram(const std::vector<Instruction>& code, int result, const Eleme
                 break;
             case Op::kLinear:
                 registers[n] = (applyLinear)(factors + i.index, registers[i.a]);
+                break;
+            case Op::kPower:
+            case Op::kFunction:
+            case Op::kRealPower:
+                // Never in a quaternion program: the quaternions' rules take powers by
+                // squaring and refuse functions (hypercomplex.h, AlgebraArithmetic).
                 break;
         }
     }
@@ -120,6 +127,10 @@ Element runProgramWithTangents(const std::vector<Instruction>& code, int result,
                     t[m] = (applyLinear)(factors + i.index,
                                          tangentRegisters[std::size_t(i.a) * M + m]);
                 break;
+            case Op::kPower:
+            case Op::kFunction:
+            case Op::kRealPower:
+                break;  // never in a quaternion program, as in runProgram
         }
     }
     for (int m = 0; m < M; ++m)

@@ -12,8 +12,8 @@
 namespace quaternia {
 
 // The functions of POV-Ray's hypercomplex julia_fractal, for the bicomplex numbers only (applied
-// through the duplex form, component by component: hypercomplex_formula.h). The polynomial
-// algebras refuse them (Formula::expand, HypercomplexFormula).
+// through the duplex form, component by component: formula_program_evaluate.cpp). The
+// polynomial algebras refuse them (Formula::expand, FormulaProgram::compile).
 enum class FormulaFunction {
     kExp,
     kLog,

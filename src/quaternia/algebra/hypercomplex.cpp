@@ -4,6 +4,7 @@
 #include "quaternia/algebra/hypercomplex.h"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "quaternia/algebra/quaternion.h"
@@ -16,14 +17,17 @@ struct AlgebraInfo {
     Algebra algebra;
     std::string_view name;
     int dimension;
+    AlgebraArithmetic rules;  // productBound, multiplicativeNorm, transcendentalFunctions, rewrites
 };
 
+// sqrt(2), the product bound of the three algebras whose norm is not multiplicative, is
+// std::numbers::sqrt2: the correctly rounded value, which std::sqrt(2.0) also returns.
 constexpr std::array<AlgebraInfo, 5> kAlgebras = {{
-    {Algebra::kQuaternion, "quaternion", 4},
-    {Algebra::kBicomplex, "bicomplex", 4},
-    {Algebra::kCoquaternion, "coquaternion", 4},
-    {Algebra::kBiquaternion, "biquaternion", 8},
-    {Algebra::kOctonion, "octonion", 8},
+    {Algebra::kQuaternion, "quaternion", 4, {1.0, true, false, true}},
+    {Algebra::kBicomplex, "bicomplex", 4, {std::numbers::sqrt2, false, true, false}},
+    {Algebra::kCoquaternion, "coquaternion", 4, {std::numbers::sqrt2, false, false, false}},
+    {Algebra::kBiquaternion, "biquaternion", 8, {std::numbers::sqrt2, false, false, false}},
+    {Algebra::kOctonion, "octonion", 8, {1.0, true, false, false}},
 }};
 
 const AlgebraInfo& info(Algebra algebra) {
@@ -91,6 +95,10 @@ std::optional<Algebra> algebraFromName(std::string_view name) {
 
 int algebraDimension(Algebra algebra) {
     return info(algebra).dimension;
+}
+
+const AlgebraArithmetic& algebraArithmetic(Algebra algebra) {
+    return info(algebra).rules;
 }
 
 const MultiplicationTable& MultiplicationTable::of(Algebra algebra) {

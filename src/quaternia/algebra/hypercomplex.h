@@ -86,6 +86,33 @@ class MultiplicationTable {
 
 int algebraDimension(Algebra algebra);
 
+// What the formula compiler (formula_program.h) and its bounds analysis (program_bounds.h) may
+// assume of an algebra's arithmetic: one row per algebra, so that neither branches on the
+// algebra itself.
+struct AlgebraArithmetic {
+    // kappa with |a b| <= kappa |a| |b| for all a, b: 1 where the norm is multiplicative
+    // (quaternions, octonions), sqrt(2) for the bicomplex numbers (duplex form: |q|^2 is half
+    // the sum of the two complex norms squared), the biquaternions (Cauchy-Schwarz on the
+    // quaternion halves) and the coquaternions (2x2 real matrices, whose Frobenius norm is
+    // sqrt(2) |q| and submultiplicative). Each is attained.
+    double productBound = 1;
+    // |a b| = |a| |b|: the top-degree part of a single term then has a positive minimum on the
+    // unit sphere (program_bounds.h, topDegreeMinimum).
+    bool multiplicativeNorm = false;
+    // Functions and real powers (POV-Ray's julia_fractal functions), through the duplex form.
+    bool transcendentalFunctions = false;
+    // Whether the compiler may rewrite the formula's arithmetic: fold constant subexpressions
+    // and drop sums with 0 and products with 1, turn products with reals into scalings and
+    // products with other constants into 4x4 linear maps, and take powers by repeated
+    // squaring. Each changes the floating-point result in the last bits (and the norm bounds,
+    // which would follow the folded constants), so it is allowed only where the pictures were
+    // made so: the quaternions, whose lanes have always run the rewritten program. The other
+    // algebras evaluate every product as written, through the multiplication table, z^n as
+    // z (z (... z)); the compiler only shares equal subexpressions there, which is exact.
+    bool rewritesArithmetic = false;
+};
+const AlgebraArithmetic& algebraArithmetic(Algebra algebra);
+
 // The basis element e_index.
 Hypercomplex basisElement(int index);
 // The real number r (r e_0).

@@ -48,6 +48,9 @@ TEST(AlgebraRules, MultiplicativeEscapeOnlyWhereTheNormIsMultiplicative) {
         const bool multiplicative = worst < 1e-12;
         EXPECT_EQ(rules.escape == EscapeRule::kMultiplicativeNorm, multiplicative)
             << algebraName(algebra) << ": largest |ab| - |a||b| " << worst;
+        // The arithmetic's own row (hypercomplex.h) says the same.
+        EXPECT_EQ(algebraArithmetic(algebra).multiplicativeNorm, multiplicative)
+            << algebraName(algebra);
         if (rules.distance == DistanceKind::kEstimate) {
             EXPECT_NE(rules.escape, EscapeRule::kNone) << algebraName(algebra);
         }

@@ -152,6 +152,10 @@ struct ProgramLanes {
                 case Op::kLinear:
                     linear(&factors_[std::size_t(i.index)], a, out, K);
                     break;
+                case Op::kPower:
+                case Op::kFunction:
+                case Op::kRealPower:
+                    break;  // never in a quaternion program (formula_program.h)
             }
         }
         const Q* result = r + std::size_t(program_->result()) * G;

@@ -1,0 +1,205 @@
+// Programs of formula_program.h evaluated in their algebra: quaternion programs through
+// runProgram and runProgramWithTangents, as the renderer runs them, and the others register by
+// register with products through the multiplication table, in the order written, and the
+// derivative carried along (forward mode).
+#include <array>
+#include <cmath>
+#include <complex>
+
+#include "quaternia/algebra/formula_program.h"
+#include "quaternia/algebra/formula_tree.h"
+
+namespace quaternia {
+namespace {
+
+using Complex = std::complex<double>;
+using Op = Instruction::Op;
+
+// f(w) and f'(w) on the principal branches of std::complex.
+std::pair<Complex, Complex> complexFunction(FormulaFunction function, const Complex& w) {
+    const Complex one(1);
+    switch (function) {
+        case FormulaFunction::kExp:
+            return {std::exp(w), std::exp(w)};
+        case FormulaFunction::kLog:
+            return {std::log(w), one / w};
+        case FormulaFunction::kSin:
+            return {std::sin(w), std::cos(w)};
+        case FormulaFunction::kCos:
+            return {std::cos(w), -std::sin(w)};
+        case FormulaFunction::kTan:
+            return {std::tan(w), one / (std::cos(w) * std::cos(w))};
+        case FormulaFunction::kSinh:
+            return {std::sinh(w), std::cosh(w)};
+        case FormulaFunction::kCosh:
+            return {std::cosh(w), std::sinh(w)};
+        case FormulaFunction::kTanh:
+            return {std::tanh(w), one / (std::cosh(w) * std::cosh(w))};
+        case FormulaFunction::kAsin:
+            return {std::asin(w), one / std::sqrt(one - w * w)};
+        case FormulaFunction::kAcos:
+            return {std::acos(w), -one / std::sqrt(one - w * w)};
+        case FormulaFunction::kAtan:
+            return {std::atan(w), one / (one + w * w)};
+        case FormulaFunction::kAsinh:
+            return {std::asinh(w), one / std::sqrt(w * w + one)};
+        case FormulaFunction::kAcosh:
+            return {std::acosh(w), one / (std::sqrt(w - one) * std::sqrt(w + one))};
+        case FormulaFunction::kAtanh:
+            return {std::atanh(w), one / (one - w * w)};
+        case FormulaFunction::kReciprocal:
+            return {one / w, -one / (w * w)};
+    }
+    return {w, one};
+}
+
+Hypercomplex negated(const Hypercomplex& a) {
+    return -1.0 * a;
+}
+
+// Components 0 .. 3 mapped by the 4x4 matrix m (row by row), as applyLinear.
+Hypercomplex linearMap(const double* m, const Hypercomplex& a) {
+    Hypercomplex q{};
+    for (int r = 0; r < 4; ++r)
+        q[r] =
+            m[r * 4 + 0] * a[0] + m[r * 4 + 1] * a[1] + m[r * 4 + 2] * a[2] + m[r * 4 + 3] * a[3];
+    return q;
+}
+
+// Runs the program into the registers `value` (and `slope`, the derivative in direction h,
+// where kSlope).
+template <bool kSlope>
+void run(const FormulaProgram& program, const MultiplicationTable& table, const Hypercomplex& z,
+         const Hypercomplex& h, Hypercomplex* value, Hypercomplex* slope) {
+    const std::vector<Instruction>& code = program.instructions();
+    const Hypercomplex* constants = program.elements().data();
+    const double* factors = program.factors().data();
+    for (std::size_t n = 0; n < code.size(); ++n) {
+        const Instruction& i = code[n];
+        const std::size_t a = std::size_t(i.a), b = std::size_t(i.b);
+        switch (i.op) {
+            case Op::kZ:
+                value[n] = z;
+                if constexpr (kSlope) slope[n] = h;
+                break;
+            case Op::kConstant:
+                value[n] = constants[i.index];
+                if constexpr (kSlope) slope[n] = Hypercomplex{};
+                break;
+            case Op::kAdd:
+                value[n] = value[a] + value[b];
+                if constexpr (kSlope) slope[n] = slope[a] + slope[b];
+                break;
+            case Op::kSubtract:
+                value[n] = value[a] - value[b];
+                if constexpr (kSlope) slope[n] = slope[a] - slope[b];
+                break;
+            case Op::kNegate:
+                value[n] = negated(value[a]);
+                if constexpr (kSlope) slope[n] = negated(slope[a]);
+                break;
+            case Op::kMultiply:
+            case Op::kSquare: {
+                // d(uv) = du v + u dv, in the order written.
+                const std::size_t right = i.op == Op::kSquare ? a : b;
+                if constexpr (kSlope)
+                    slope[n] = table.multiply(slope[a], value[right]) +
+                               table.multiply(value[a], slope[right]);
+                value[n] = table.multiply(value[a], value[right]);
+                break;
+            }
+            case Op::kScale:
+                value[n] = factors[i.index] * value[a];
+                if constexpr (kSlope) slope[n] = factors[i.index] * slope[a];
+                break;
+            case Op::kLinear:
+                value[n] = linearMap(factors + i.index, value[a]);
+                if constexpr (kSlope) slope[n] = linearMap(factors + i.index, slope[a]);
+                break;
+            case Op::kPower: {
+                // x^e = x (x (... x)), the derivative by the product rule at each factor.
+                Hypercomplex power = realElement(1), powerSlope{};
+                for (int e = 0; e < i.index; ++e) {
+                    if constexpr (kSlope)
+                        powerSlope =
+                            table.multiply(slope[a], power) + table.multiply(value[a], powerSlope);
+                    power = e == 0 ? value[a] : table.multiply(value[a], power);
+                }
+                value[n] = power;
+                if constexpr (kSlope) slope[n] = powerSlope;
+                break;
+            }
+            case Op::kFunction:
+            case Op::kRealPower: {
+                // The duplex form: f applied to each complex component, and the chain rule
+                // f'(A) dA likewise.
+                const auto w = duplexForm(value[a]);
+                const auto dw = kSlope ? duplexForm(slope[a]) : std::array<Complex, 2>{};
+                const double exponent = i.op == Op::kRealPower ? factors[i.index] : 0;
+                std::array<Complex, 2> f, df;
+                for (std::size_t k = 0; k < 2; ++k) {
+                    const auto [fk, derivative] =
+                        i.op == Op::kFunction ? complexFunction(FormulaFunction(i.index), w[k])
+                                              : std::pair{std::pow(w[k], exponent),
+                                                          exponent * std::pow(w[k], exponent - 1)};
+                    f[k] = fk;
+                    df[k] = derivative * dw[k];
+                }
+                value[n] = fromDuplexForm(f[0], f[1]);
+                if constexpr (kSlope) slope[n] = fromDuplexForm(df[0], df[1]);
+                break;
+            }
+        }
+    }
+}
+
+// Registers on the stack for the usual short formulas, on the heap past that.
+constexpr std::size_t kStackRegisters = 16;
+
+struct Registers {
+    explicit Registers(std::size_t count) {
+        if (count > kStackRegisters) heap.resize(count);
+    }
+    Hypercomplex* data() { return heap.empty() ? stack.data() : heap.data(); }
+    std::array<Hypercomplex, kStackRegisters> stack;  // written before read, one by one
+    std::vector<Hypercomplex> heap;
+};
+
+Quaternion quaternionOf(const Hypercomplex& a) {
+    return {a[0], a[1], a[2], a[3]};
+}
+Hypercomplex elementOf(const Quaternion& q) {
+    return {q.w, q.x, q.y, q.z, 0, 0, 0, 0};
+}
+
+}  // namespace
+
+Hypercomplex evaluateInAlgebra(const FormulaProgram& program, const MultiplicationTable& table,
+                               const Hypercomplex& z) {
+    if (program.algebra() == Algebra::kQuaternion)
+        return elementOf(program.evaluate(quaternionOf(z)));
+    Registers value(program.instructions().size());
+    run<false>(program, table, z, z, value.data(), nullptr);
+    return value.data()[program.result()];
+}
+
+std::pair<Hypercomplex, Hypercomplex> evaluateInAlgebraWithDerivative(
+    const FormulaProgram& program, const MultiplicationTable& table, const Hypercomplex& z,
+    const Hypercomplex& h) {
+    if (program.algebra() == Algebra::kQuaternion) {
+        std::vector<Quaternion> registers(program.instructions().size()),
+            tangents(program.instructions().size());
+        const Quaternion direction[1] = {quaternionOf(h)};
+        Quaternion derivative[1];
+        const Quaternion p = runProgramWithTangents<1>(
+            program.instructions(), program.result(), quaternionOf(z), direction, Quaternion(0),
+            program.constants().data(), program.factors().data(), registers.data(), tangents.data(),
+            derivative);
+        return {elementOf(p), elementOf(derivative[0])};
+    }
+    Registers value(program.instructions().size()), slope(program.instructions().size());
+    run<true>(program, table, z, h, value.data(), slope.data());
+    return {value.data()[program.result()], slope.data()[program.result()]};
+}
+
+}  // namespace quaternia
