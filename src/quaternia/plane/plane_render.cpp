@@ -9,6 +9,7 @@
 #include "quaternia/algebra/formula.h"
 #include "quaternia/dynamics/basins.h"
 #include "quaternia/dynamics/mandelbrot.h"
+#include "quaternia/fractal/algebra_rules.h"
 #include "quaternia/fractal/distance.h"
 #include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/image/png_writer.h"
@@ -150,6 +151,13 @@ PlaneImage renderHypercomplexSlice(const Scene& scene, const PlaneView& view,
     });
 }
 
+// Whether the scene's algebra takes the quaternions' own set, the expanded polynomial, whose
+// complex restriction the planes of complex dynamics draw (algebraRules); the others reach them
+// through the copy of C their formula keeps (complexKindScene) or draw a slice.
+bool ownQuaternionSet(const Scene& scene) {
+    return algebraRules(scene.fractal.algebra).quaternionSet;
+}
+
 // The complex kinds in another algebra: where the formula maps a copy span{1, u} of C into
 // itself with every constant in it (HypercomplexFormula::complexAxis), it acts there as the
 // same formula on span{1, u} in H, so the quaternion scene with c's components 0 .. 3 has the
@@ -158,7 +166,7 @@ PlaneImage renderHypercomplexSlice(const Scene& scene, const PlaneView& view,
 // z^d + c for each complex c as the quaternion check finds. Refused, naming plane.kind and the
 // algebra, where there is no such plane. The quaternions' scene is returned as it is.
 Scene complexKindScene(const Scene& scene) {
-    if (scene.fractal.algebra == Algebra::kQuaternion) return scene;
+    if (ownQuaternionSet(scene)) return scene;
     const bool mandelbrot = scene.plane.kind == PlaneKind::Mandelbrot;
     Scene probe = scene;
     if (mandelbrot) {
@@ -213,8 +221,7 @@ PlaneView planeViewFromScene(const Scene& scene) {
 }
 
 ComplexRestriction complexRestrictionOfScene(const Scene& scene) {
-    if (scene.fractal.algebra != Algebra::kQuaternion)
-        return complexRestrictionOfScene(complexKindScene(scene));
+    if (!ownQuaternionSet(scene)) return complexRestrictionOfScene(complexKindScene(scene));
     auto restriction =
         restrictToComplexPlane(compileFormula(scene.fractal.formula, scene.fractal.c));
     if (!restriction)
@@ -238,7 +245,7 @@ ComplexRestriction complexRestrictionOfScene(const Scene& scene) {
 void validatePlaneScene(const Scene& scene) {
     validateScene(scene);
     const PlaneSettings& plane = scene.plane;
-    if (scene.fractal.algebra != Algebra::kQuaternion) {
+    if (!ownQuaternionSet(scene)) {
         hypercomplexSetOfScene(scene);  // formula, bailout and slice keys
         if (plane.kind != PlaneKind::Slice) {
             validatePlaneScene(complexKindScene(scene));
@@ -287,7 +294,7 @@ void validatePlaneScene(const Scene& scene) {
 
 PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
     validatePlaneScene(scene);
-    if (scene.fractal.algebra != Algebra::kQuaternion && scene.plane.kind != PlaneKind::Slice)
+    if (!ownQuaternionSet(scene) && scene.plane.kind != PlaneKind::Slice)
         return renderPlane(complexKindScene(scene), options);
     const PlaneView view = planeViewFromScene(scene);
     const PlaneSettings& plane = scene.plane;
@@ -299,8 +306,7 @@ PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
                                [&](std::complex<double> z) { return restriction.toQuaternion(z); });
         }
         case PlaneKind::Slice: {
-            if (scene.fractal.algebra != Algebra::kQuaternion)
-                return renderHypercomplexSlice(scene, view, options);
+            if (!ownQuaternionSet(scene)) return renderHypercomplexSlice(scene, view, options);
             const double scale = std::sqrt(norm(plane.u) * norm(plane.v));
             return renderJulia(scene, view, scale, options, [&](std::complex<double> z) {
                 return plane.origin + plane.u * z.real() + plane.v * z.imag();
