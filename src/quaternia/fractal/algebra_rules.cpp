@@ -6,21 +6,35 @@
 namespace quaternia {
 namespace {
 
+// The rows as written; escape is filled in by algebraRules().
 // clang-format off
 constexpr std::array<AlgebraRules, 5> kRules = {{
-    // algebra               quaternion set  distance                  escape                          bailout  M at estimate  fold   duplex
-    {Algebra::kQuaternion,   true,           DistanceKind::kEstimate,  EscapeRule::kMultiplicativeNorm, 0,       true,          false, false},
-    {Algebra::kBicomplex,    false,          DistanceKind::kEstimate,  EscapeRule::kDuplexComponents,   4,       false,         false, true},
-    {Algebra::kCoquaternion, false,          DistanceKind::kLipschitz, EscapeRule::kNone,               2,       false,         false, false},
-    {Algebra::kBiquaternion, false,          DistanceKind::kLipschitz, EscapeRule::kNone,               2,       false,         false, false},
-    {Algebra::kOctonion,     false,          DistanceKind::kEstimate,  EscapeRule::kMultiplicativeNorm, 0,       true,          true,  false},
+    // algebra               quaternion set  distance                  bailout  M at estimate  fold   duplex
+    {Algebra::kQuaternion,   true,           DistanceKind::kEstimate,  0,       true,          false, false},
+    {Algebra::kBicomplex,    false,          DistanceKind::kEstimate,  4,       false,         false, true},
+    {Algebra::kCoquaternion, false,          DistanceKind::kLipschitz, 2,       false,         false, false},
+    {Algebra::kBiquaternion, false,          DistanceKind::kLipschitz, 2,       false,         false, false},
+    {Algebra::kOctonion,     false,          DistanceKind::kEstimate,  0,       true,          true,  false},
 }};
 // clang-format on
+
+// Where orbits escape follows from the arithmetic: a multiplicative norm gives the radius from
+// the top-degree part; the duplex form gives each component its own; otherwise none is certain.
+EscapeRule escapeOf(const AlgebraRules& rules) {
+    if (algebraArithmetic(rules.algebra).multiplicativeNorm) return EscapeRule::kMultiplicativeNorm;
+    return rules.duplexForm ? EscapeRule::kDuplexComponents : EscapeRule::kNone;
+}
 
 }  // namespace
 
 const AlgebraRules& algebraRules(Algebra algebra) {
-    for (const AlgebraRules& rules : kRules)
+    static const std::array<AlgebraRules, kRules.size()> rows = [] {
+        std::array<AlgebraRules, kRules.size()> all = kRules;
+        for (AlgebraRules& rules : all)
+            rules.escape = escapeOf(rules);
+        return all;
+    }();
+    for (const AlgebraRules& rules : rows)
         if (rules.algebra == algebra) return rules;
     throw std::logic_error("algebraRules: unknown algebra");
 }

@@ -29,7 +29,6 @@ struct AlgebraRules {
     // algebras take HypercomplexJuliaSet.
     bool quaternionSet;
     DistanceKind distance;
-    EscapeRule escape;
     // The bailout where fractal.bailout is 0: 0 for the certified escape radius, else POV-Ray's
     // (4 for its bicomplex `hypercomplex`) or 2.
     double defaultBailout;
@@ -40,6 +39,10 @@ struct AlgebraRules {
     bool foldsOntoQuaternions;
     // Bicomplex polynomials iterated as their two duplex components (the SIMD lanes).
     bool duplexForm;
+    // Where orbits escape: not written per row but derived (algebraRules) from the algebra's
+    // arithmetic (hypercomplex.h: a multiplicative norm) and the duplex form, so that the two
+    // tables cannot disagree.
+    EscapeRule escape = EscapeRule::kNone;
 };
 
 // The row of `algebra`.
