@@ -30,6 +30,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/render/camera.cpp
   quaternia/render/march.cpp
   quaternia/render/shade.cpp
+  quaternia/render/point_queries.cpp
   quaternia/render/render.cpp
   quaternia/render/sample_pattern.cpp
   quaternia/render/render_png.cpp

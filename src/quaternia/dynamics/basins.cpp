@@ -71,11 +71,12 @@ struct BasinMap {
     // Each attracting cycle a hue (golden-ratio spaced), each immediate basin (the cycle point
     // approached at multiples of the period) a lighter or darker shade of it; infinity grey,
     // darkest where orbits escape fastest; undecided points mid grey.
-    Rgba colourOf(Complex z) const {
+    // The colour of z's fate, and its label (BasinImage::labels).
+    std::pair<Rgba, int32_t> colourOf(Complex z) const {
         for (int k = 0; k <= maxIterations; ++k) {
             if (std::abs(z) > escapeRadius) {
                 float grey = float(0.25 * (1 - std::exp(-k / 16.0)));
-                return {grey, grey, grey, 1};
+                return {{grey, grey, grey, 1}, BasinImage::kEscapes};
             }
             for (std::size_t c = 0; c < cycles.size(); ++c) {
                 const std::vector<Complex>& points = cycles[c].points;
@@ -84,12 +85,12 @@ struct BasinMap {
                     if (std::abs(z - points[j]) >= capture) continue;
                     int phase = ((j - k) % n + n) % n;
                     double hue = std::fmod(0.6 + 0.618033988749895 * double(c), 1.0);
-                    return hsv(hue, 0.7, 0.95 - 0.45 * phase / n);
+                    return {hsv(hue, 0.7, 0.95 - 0.45 * phase / n), int32_t(c)};
                 }
             }
             z = p.evaluate(z);
         }
-        return {0.5f, 0.5f, 0.5f, 1};
+        return {{0.5f, 0.5f, 0.5f, 1}, BasinImage::kUndecided};
     }
 };
 
@@ -102,6 +103,7 @@ BasinImage renderBasins(const ComplexPolynomial& p, const PlaneView& view,
     map.capture = captureRadius(map.cycles, map.escapeRadius);
     BasinImage result;
     result.image = Image(view.pixelWidth, view.pixelHeight);
+    result.labels.assign(size_t(view.pixelWidth) * size_t(view.pixelHeight), 0);
     result.attractingCycles = int(map.cycles.size());
     for (const AttractingCycle& cycle : map.cycles)
         result.periods.push_back(int(cycle.points.size()));
@@ -118,7 +120,9 @@ BasinImage renderBasins(const ComplexPolynomial& p, const PlaneView& view,
                         // A rank-1 lattice: the pixel centre for one sample.
                         double u = (s + 0.5) / samples;
                         double v = std::fmod(0.5 + s * 0.618033988749895, 1.0);
-                        Rgba c = map.colourOf(view.pointAt(x + u, y + v));
+                        const auto [c, label] = map.colourOf(view.pointAt(x + u, y + v));
+                        if (s == 0)
+                            result.labels[size_t(y) * size_t(view.pixelWidth) + size_t(x)] = label;
                         sum = {sum.r + c.r, sum.g + c.g, sum.b + c.b, sum.a + c.a};
                     }
                     float inverse = 1.0f / float(samples);

@@ -21,6 +21,10 @@ struct BasinOptions {
 
 struct BasinImage {
     Image image;  // each attracting cycle a hue, its immediate basins shades of it; infinity dark
+    // Per pixel, row-major, of the pixel's first sample: the index of the attracting cycle whose
+    // basin holds it (into periods), kEscapes, or kUndecided.
+    static constexpr int32_t kEscapes = -1, kUndecided = -2;
+    std::vector<int32_t> labels;
     int attractingCycles = 0;  // finite attracting cycles found
     std::vector<int> periods;  // of each attracting cycle
     bool completed = true;

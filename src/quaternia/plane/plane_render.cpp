@@ -54,12 +54,26 @@ Color escapeShade(bool inside, double smoothIteration, double distance, double p
     return lerp(interiorColor(), escapeColor(smoothIteration), std::sqrt(t));
 }
 
-// Runs sample(point) at `samples` stratified positions of every pixel and stores the mean.
+// What a sample gives: its colour, and the label of the point (PlaneImage::labels).
+struct PlaneSample {
+    Color color;
+    int32_t label = 0;
+};
+
+// The label of an escape estimate: the escape iteration, -1 for a point that stayed.
+template <typename Estimate>
+int32_t escapeLabel(const Estimate& e) {
+    return e.inside ? -1 : int32_t(e.escapeIteration);
+}
+
+// Runs sample(point) at `samples` stratified positions of every pixel and stores the mean
+// colour, and the first sample's label.
 template <typename Sampler>
 PlaneImage renderSamples(const PlaneView& view, int samples, const PlaneRenderOptions& options,
                          const Sampler& sample) {
     PlaneImage result;
     result.image = Image(view.pixelWidth, view.pixelHeight);
+    result.labels.assign(size_t(view.pixelWidth) * size_t(view.pixelHeight), 0);
     const ParallelOptions parallel =
         imageParallelOptions(options, view.pixelWidth, view.pixelHeight);
     auto start = std::chrono::steady_clock::now();
@@ -70,7 +84,11 @@ PlaneImage renderSamples(const PlaneView& view, int samples, const PlaneRenderOp
                     Color sum;
                     for (int k = 0; k < samples; ++k) {
                         auto [sx, sy] = samplePosition(k, samples, px, py);
-                        sum += sample(view.pointAt(px + sx, py + sy));
+                        const PlaneSample s = sample(view.pointAt(px + sx, py + sy));
+                        sum += s.color;
+                        if (k == 0)
+                            result.labels[size_t(py) * size_t(view.pixelWidth) + size_t(px)] =
+                                s.label;
                     }
                     Color mean = sum / double(samples);
                     result.image.at(px, py) =
@@ -96,12 +114,15 @@ PlaneImage renderEscape(const Scene& scene, const PlaneView& view, double scale,
         const double lineWidth = scene.plane.boundaryWidth * pixelSize;
         return renderSamples(view, scene.render.samples, options, [&](std::complex<double> z) {
             DistanceEstimate e = estimateAt(z);
-            return !e.inside && e.distance < lineWidth ? boundaryColor() : interiorColor();
+            return PlaneSample{
+                !e.inside && e.distance < lineWidth ? boundaryColor() : interiorColor(),
+                escapeLabel(e)};
         });
     }
     return renderSamples(view, scene.render.samples, options, [&](std::complex<double> z) {
         DistanceEstimate e = estimateAt(z);
-        return escapeShade(e.inside, e.smoothIteration, e.distance, pixelSize);
+        return PlaneSample{escapeShade(e.inside, e.smoothIteration, e.distance, pixelSize),
+                           escapeLabel(e)};
     });
 }
 
@@ -318,7 +339,8 @@ PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
             const double pixelSize = view.pixelSize();
             return renderSamples(view, scene.render.samples, options, [&](std::complex<double> c) {
                 MandelbrotEstimate e = estimateMandelbrot(c, iterations, degree);
-                return escapeShade(e.inside, e.smoothIteration, e.distance, pixelSize);
+                return PlaneSample{escapeShade(e.inside, e.smoothIteration, e.distance, pixelSize),
+                                   escapeLabel(e)};
             });
         }
         case PlaneKind::Basins: {
@@ -332,6 +354,7 @@ PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
                 renderBasins(complexRestrictionOfScene(scene).polynomial, view, basinOptions);
             PlaneImage result;
             result.image = std::move(basins.image);
+            result.labels = std::move(basins.labels);
             result.completed = basins.completed;
             result.threads = resolveThreadCount(options.threads);
             result.samples = int64_t{view.pixelWidth} * view.pixelHeight * scene.render.samples;
@@ -347,7 +370,7 @@ uint64_t planeMemoryBytes(const Scene& scene) {
     const uint64_t pixels = uint64_t(scene.render.width) * uint64_t(scene.render.height);
     const PngFormat format{scene.render.width, scene.render.height, scene.render.bitDepth,
                            PngColorType::Rgba};
-    return 2 * pixels * sizeof(Rgba) + 2 * pngBytesBound(format);
+    return 2 * pixels * sizeof(Rgba) + pixels * sizeof(int32_t) + 2 * pngBytesBound(format);
 }
 
 }  // namespace quaternia

@@ -21,6 +21,10 @@ using PlaneRenderOptions = WorkOptions;
 
 struct PlaneImage {
     Image image;  // display values, alpha 1
+    // Per pixel, row-major, of the pixel's first sample: the escape iteration for the escape
+    // kinds (julia, julia-boundary, mandelbrot, slice; -1 where the orbit stayed), the basin for
+    // basins (BasinImage::labels).
+    std::vector<int32_t> labels;
     int64_t samples = 0;
     int threads = 0;
     double seconds = 0;

@@ -244,13 +244,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
     // The lanes take the quaternions, bicomplex polynomials and octonion real forms; the other
     // algebras run the scalar reference, by fixed steps where their distance is only a short proven
     // bound (hypercomplex_julia.h).
-    if (scene.render.engine == RenderEngine::Simd &&
-        scene.render.method == MarchMethod::SphereTracing) {
-        if (fractal_.setAs<QuaternionJuliaSet>())
-            lanes_ = LaneFractal::from(fractal_, scene.render.precision);
-        else if (!(lanes_ = LaneFractal::fromBicomplex(fractal_, scene.render.precision)))
-            lanes_ = LaneFractal::fromOctonion(scene, fractal_, scene.render.precision);
-    }
+    lanes_ = LaneFractal::forScene(scene, fractal_);
     shader_.toDisplay(&backgroundDisplay_, 1);
 }
 

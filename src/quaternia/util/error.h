@@ -20,4 +20,11 @@ class UserError : public std::runtime_error {
     std::string key_;
 };
 
+// A request that does not fit its memory budget (memory_budget.h, requireMemory), refused before
+// the work: a UserError that front ends may tell apart (Python raises MemoryError).
+class MemoryLimitError : public UserError {
+  public:
+    using UserError::UserError;
+};
+
 }  // namespace quaternia

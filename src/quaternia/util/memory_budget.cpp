@@ -153,9 +153,9 @@ std::string formatBytes(uint64_t bytes) {
 void requireMemory(uint64_t needed, const MemoryBudget& budget, const std::string& key,
                    const std::string& what, const std::string& advice) {
     if (budget.bytes == 0 || needed <= budget.bytes) return;
-    throw UserError(key, what + " needs about " + formatBytes(needed) +
-                             " of memory, more than the " + formatBytes(budget.bytes) +
-                             " available (" + budget.source + "); " + advice);
+    throw MemoryLimitError(key, what + " needs about " + formatBytes(needed) +
+                                    " of memory, more than the " + formatBytes(budget.bytes) +
+                                    " available (" + budget.source + "); " + advice);
 }
 
 }  // namespace quaternia

@@ -27,8 +27,8 @@ MemoryBudget parseMemoryBudget(const std::string& text, const std::string& optio
 // "1.50 GiB", "12.0 MiB", "512 bytes".
 std::string formatBytes(uint64_t bytes);
 
-// Throws UserError(key, "<what> needs about N of memory, more than the M available (<source>);
-// <advice>") when `needed` exceeds the budget (never when the budget is unlimited).
+// Throws MemoryLimitError(key, "<what> needs about N of memory, more than the M available
+// (<source>); <advice>") when `needed` exceeds the budget (never when the budget is unlimited).
 void requireMemory(uint64_t needed, const MemoryBudget& budget, const std::string& key,
                    const std::string& what, const std::string& advice);
 

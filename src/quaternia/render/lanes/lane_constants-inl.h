@@ -18,6 +18,7 @@ template <class D>
 struct LaneConstants {
     using V = hn::Vec<D>;
     QuaternionT<V> origin, axis0, axis1, axis2, c;
+    QuaternionT<V> axis3, loopAxis3;  // of a fourth coordinate (LaneFractal::axes[3])
     V scale, bailoutSquared, escapeRadiusSquared, estimateRadiusSquared, stepScale, maxIterations;
     V gainFactor;        // 4 s^2 for d = 2, s^2 d^2 otherwise
     V normSquaredScale;  // LaneFractal::normSquaredScale: |z|^2 from the iterate's |w|^2
@@ -120,6 +121,7 @@ struct LaneConstants {
         axis0 = lanes(f.axes[0]);
         axis1 = lanes(f.axes[1]);
         axis2 = lanes(f.axes[2]);
+        axis3 = lanes(f.axes[3]);
         c = lanes(f.c);
         scale = hn::Set(d, T(f.scale));
         bailoutSquared = hn::Set(d, T(f.bailoutSquared));
@@ -137,6 +139,7 @@ struct LaneConstants {
         loopAxis0 = lanes(f.axes[0], 2 * f.scale);
         loopAxis1 = lanes(f.axes[1], 2 * f.scale);
         loopAxis2 = lanes(f.axes[2], 2 * f.scale);
+        loopAxis3 = lanes(f.axes[3], 2 * f.scale);
         scaledC = hn::Set(d, T(2 * f.scale * f.c[0]));
         scaledCi = hn::Set(d, T(2 * f.scale * f.c[1]));
         scaledBailoutSquared = hn::Set(d, T(fourScaleSquared * f.bailoutSquared));
@@ -163,6 +166,13 @@ struct LaneConstants {
             q.z = hn::Zero(hn::DFromV<V>());
         }
         return q;
+    }
+    // A point of quaternionFromWorld (or, `loop`, loopFromWorld) moved by its fourth coordinate
+    // w (points of the algebra, LaneCoordinates::Algebra; never folded).
+    QuaternionT<V> plusFourth(const QuaternionT<V>& q, V w, bool loop) const {
+        const QuaternionT<V>& axis = loop ? loopAxis3 : axis3;
+        return QuaternionT<V>{hn::MulAdd(w, axis.w, q.w), hn::MulAdd(w, axis.x, q.x),
+                              hn::MulAdd(w, axis.y, q.y), hn::MulAdd(w, axis.z, q.z)};
     }
     // The same point as estimateThreeNumbers takes it: u = 2 s z.
     QuaternionT<V> loopFromWorld(V x, V y, V z) const {

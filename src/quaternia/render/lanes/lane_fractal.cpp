@@ -58,7 +58,8 @@ void iterateConjugate(LaneFractal& lanes, const QuadraticTerm& term) {
 
 }  // namespace
 
-LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
+LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision,
+                              LaneCoordinates coordinates) {
     const QuaternionJuliaSet& set = *fractal.setAs<QuaternionJuliaSet>();
     LaneFractal lanes;
     const Polynomial& polynomial = set.polynomial();
@@ -95,14 +96,19 @@ LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
         }
     }
     const Slice& slice = fractal.slice();
-    // The slice map is affine: its value at the origin plus the images of the unit vectors.
-    lanes.origin = components(slice.quaternionFromWorld(Point3d(0, 0, 0)));
-    for (int axis = 0; axis < 3; ++axis)
-        lanes.axes[axis] = components(slice.quaternionTangents()[axis]);
+    if (coordinates == LaneCoordinates::Algebra) {
+        for (size_t axis = 0; axis < 4; ++axis)
+            lanes.axes[axis][axis] = 1;
+    } else {
+        // The slice map is affine: its value at the origin plus the images of the unit vectors.
+        lanes.origin = components(slice.quaternionFromWorld(Point3d(0, 0, 0)));
+        for (int axis = 0; axis < 3; ++axis)
+            lanes.axes[axis] = components(slice.quaternionTangents()[axis]);
+    }
     lanes.maxIterations = set.maxIterations();
     lanes.bailoutSquared = set.bailout() * set.bailout();
     lanes.escapeRadiusSquared = set.escapeRadius() * set.escapeRadius();
-    lanes.stepScale = slice.stepScale();
+    lanes.stepScale = coordinates == LaneCoordinates::Algebra ? 1 : slice.stepScale();
     lanes.precision = precision;
     lanes.boundingRadius = set.bailout();  // |p| <= |s(p)| (slice.h)
     if (std::optional<QuadraticTerm> term = polynomial.quadraticTerm(); term && lanes.program)
@@ -110,7 +116,8 @@ LaneFractal LaneFractal::from(const Fractal& fractal, Precision precision) {
     return lanes;
 }
 
-std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Precision precision) {
+std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Precision precision,
+                                                      LaneCoordinates coordinates) {
     const HypercomplexJuliaSet* other = fractal.setAs<HypercomplexJuliaSet>();
     if (!other) return std::nullopt;
     const HypercomplexJuliaSet& set = *other;
@@ -143,13 +150,21 @@ std::optional<LaneFractal> LaneFractal::fromBicomplex(const Fractal& fractal, Pr
     };
     LaneFractal lanes;
     const Slice& slice = fractal.slice();
-    lanes.origin = duplex(slice.fromWorld(Point3d(0, 0, 0)));
-    for (size_t axis = 0; axis < 3; ++axis)
-        lanes.axes[axis] = duplex(slice.tangents()[axis]);
+    if (coordinates == LaneCoordinates::Algebra) {
+        for (size_t axis = 0; axis < 4; ++axis) {
+            Hypercomplex unit{};
+            unit[axis] = 1;
+            lanes.axes[axis] = duplex(unit);
+        }
+    } else {
+        lanes.origin = duplex(slice.fromWorld(Point3d(0, 0, 0)));
+        for (size_t axis = 0; axis < 3; ++axis)
+            lanes.axes[axis] = duplex(slice.tangents()[axis]);
+    }
     lanes.degree = formula.degree();
     lanes.maxIterations = set.maxIterations();
     lanes.bailoutSquared = lanes.escapeRadiusSquared = bailoutSquared;
-    lanes.stepScale = slice.stepScale();
+    lanes.stepScale = coordinates == LaneCoordinates::Algebra ? 1 : slice.stepScale();
     lanes.precision = precision;
     lanes.boundingRadius = slice.boundingRadius(set.bailout());
     lanes.bicomplex = std::move(bicomplex);
@@ -185,6 +200,19 @@ std::optional<LaneFractal> LaneFractal::fromOctonion(const Scene& scene, const F
     lanes.stepScale = fractal.slice().stepScale();
     lanes.boundingRadius = fractal.slice().boundingRadius(std::sqrt(lanes.bailoutSquared));
     return lanes;
+}
+
+std::optional<LaneFractal> LaneFractal::forScene(const Scene& scene, const Fractal& fractal,
+                                                 LaneCoordinates coordinates) {
+    if (scene.render.engine != RenderEngine::Simd ||
+        scene.render.method != MarchMethod::SphereTracing)
+        return std::nullopt;
+    const Precision precision = scene.render.precision;
+    if (fractal.setAs<QuaternionJuliaSet>()) return from(fractal, precision, coordinates);
+    if (std::optional<LaneFractal> lanes = fromBicomplex(fractal, precision, coordinates))
+        return lanes;
+    if (coordinates == LaneCoordinates::Algebra) return std::nullopt;
+    return fromOctonion(scene, fractal, precision);
 }
 
 LaneFractal LaneFractal::withComplexConstant() const {
@@ -229,7 +257,7 @@ void RayBatch::removeFlagged(const std::vector<uint8_t>& drop) {
 }
 
 void PointBatch::clear() {
-    x.clear(), y.clear(), z.clear();
+    x.clear(), y.clear(), z.clear(), w.clear();
 }
 
 }  // namespace quaternia

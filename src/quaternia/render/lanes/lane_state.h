@@ -124,13 +124,16 @@ struct Vector3Lanes {
     QUATERNIA_LANE_ARRAY(T, x);
     QUATERNIA_LANE_ARRAY(T, y);
     QUATERNIA_LANE_ARRAY(T, z);
+    QUATERNIA_LANE_ARRAY(T, w);  // PointBatch::w, where the points have it
 
     // Points [begin, begin + count); the lanes past count repeat the last point so that every
     // lane computes something finite.
     void gather(const PointBatch& points, size_t begin, size_t count) {
+        const bool fourth = !points.w.empty();
         for (size_t lane = 0; lane < kLaneCapacity<T>; ++lane) {
             size_t i = begin + std::min(lane, count - 1);
             x[lane] = T(points.x[i]), y[lane] = T(points.y[i]), z[lane] = T(points.z[i]);
+            if (fourth) w[lane] = T(points.w[i]);
         }
     }
 };

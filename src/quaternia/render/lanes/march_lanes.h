@@ -23,12 +23,18 @@
 
 namespace quaternia {
 
+// Where the points the lanes take live: in the slice's 3D space (the renderer's rays), or in the
+// algebra itself (points of H, or of a 4-component algebra, as x, y, z and w).
+enum class LaneCoordinates { World, Algebra };
+
 // A Fractal flattened for the lanes: the slice as an affine map p -> origin + x axes[0] +
-// y axes[1] + z axes[2] of R^3 into H, and the polynomial: the power form s z^d + c, or else
+// y axes[1] + z axes[2] (+ w axes[3] for points with a fourth coordinate, PointBatch::w) of R^3
+// (R^4) into H, and the polynomial: the power form s z^d + c, or else
 // its program.
 struct LaneFractal {
     std::array<double, 4> origin{};
-    std::array<std::array<double, 4>, 3> axes{};
+    // axes[3] is zero on a slice; LaneCoordinates::Algebra makes the map the identity of R^4.
+    std::array<std::array<double, 4>, 4> axes{};
     std::array<double, 4> c{};
     double scale = 1;
     int degree = 2;  // of the polynomial, either form
@@ -80,16 +86,28 @@ struct LaneFractal {
     double boundingRadius = 2;
 
     // The power form where the polynomial has it (d <= kMaxLaneDegree), else the program.
-    static LaneFractal from(const Fractal& fractal, Precision precision);
+    // With LaneCoordinates::Algebra the points are the algebra's own (x, y, z, w) = components
+    // 0 to 3, the slice left out (stepScale 1).
+    static LaneFractal from(const Fractal& fractal, Precision precision,
+                            LaneCoordinates coordinates = LaneCoordinates::World);
     // The lanes of a bicomplex polynomial (not functions) whose bailout makes every escape of
     // |q| an escape of one duplex component (bailout^2 >= (R_1^2 + R_2^2) / 2, the default
     // bailout 4 for z^2 + c while both duplex components of c have modulus at most 12): the scalar
     // reference's estimate then never needs its Lipschitz fallback. Nothing for any other fractal.
-    static std::optional<LaneFractal> fromBicomplex(const Fractal& fractal, Precision precision);
+    static std::optional<LaneFractal> fromBicomplex(
+        const Fractal& fractal, Precision precision,
+        LaneCoordinates coordinates = LaneCoordinates::World);
     // The lanes of an octonion real form (octonion_fold.h; formula as written in the scene),
     // on any slice. Nothing for any other fractal.
     static std::optional<LaneFractal> fromOctonion(const Scene& scene, const Fractal& fractal,
                                                    Precision precision);
+    // The renderer's choice for `scene`: the lanes above where the SIMD engine sphere traces
+    // (the quaternions, bicomplex polynomials, octonion real forms; in the scene's precision),
+    // nothing where the scalar reference draws. With LaneCoordinates::Algebra, for points of
+    // the algebra (4 components: no octonion fold).
+    static std::optional<LaneFractal> forScene(
+        const Scene& scene, const Fractal& fractal,
+        LaneCoordinates coordinates = LaneCoordinates::World);
 
     // The same object seen through the rotation phi of the imaginary 3-space that takes Im c
     // onto the i axis: c becomes the complex Re c + |Im c| i and the slice map is followed by
@@ -133,9 +151,10 @@ struct RayBatch {
     size_t size() const { return ox.size(); }
 };
 
-// Points as structure of arrays.
+// Points as structure of arrays; w, the fourth coordinate of points of the algebra
+// (LaneCoordinates::Algebra), is empty for 3D points.
 struct PointBatch {
-    std::vector<double> x, y, z;
+    std::vector<double> x, y, z, w;
     void clear();
     void push(const Point3d& p) { x.push_back(p.x), y.push_back(p.y), z.push_back(p.z); }
     size_t size() const { return x.size(); }
@@ -201,8 +220,8 @@ void estimatePoints(const LaneFractal& fractal, const PointBatch& points,
 void estimateDistances(const LaneFractal& fractal, const PointBatch& points,
                        std::vector<double>& distances, LaneCounters& counters);
 
-// The M of a point's analytic normal (QuaternionJuliaSet::gradientIterations): the iterations of its
-// estimate, maxIterations - 1 for points inside.
+// The M of a point's analytic normal (QuaternionJuliaSet::gradientIterations): the iterations of
+// its estimate, maxIterations - 1 for points inside.
 inline int gradientIterationsOf(const PointEstimate& estimate, int maxIterations) {
     return estimate.inside ? maxIterations - 1 : estimate.iterations;
 }

@@ -40,24 +40,32 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
     const size_t lanes = hn::Lanes(d);
     Vector3Lanes<T> in;
     EstimateLanes<T> out;
+    const bool fourth = !points.w.empty();
     for (size_t begin = 0; begin < points.size(); begin += lanes) {
         size_t count = std::min(lanes, points.size() - begin);
         in.gather(points, begin, count);
         const hn::Mask<D> live[1] = {hn::FirstN(d, count)};
         const auto x = hn::Load(d, in.x), y = hn::Load(d, in.y), z = hn::Load(d, in.z);
+        // The point as the iteration takes it (`loop`: u = 2 s z), moved by its fourth
+        // coordinate where it has one.
+        auto pointOf = [&](bool loop) {
+            const QuaternionT<hn::Vec<D>> q =
+                loop ? k.loopFromWorld(x, y, z) : k.quaternionFromWorld(x, y, z);
+            return fourth ? k.plusFourth(q, hn::Load(d, in.w), loop) : q;
+        };
         LaneEstimate<D> estimates[1];
         if (k.bicomplex) {
-            const QuaternionT<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
+            const QuaternionT<hn::Vec<D>> q[1] = {pointOf(false)};
             estimateBicomplex<kOrbit>(d, k, q, live, estimates, counters);
         } else if (kQuadratic && k.threeNumbers) {
-            const QuaternionT<hn::Vec<D>> u[1] = {k.loopFromWorld(x, y, z)};
+            const QuaternionT<hn::Vec<D>> u[1] = {pointOf(true)};
             estimateThreeNumbers<kOrbit, ThreeNumbersGroup<D>>(d, k, u, live, estimates, counters);
         } else if (!kQuadratic && k.realThreeNumbers) {
-            const QuaternionT<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
+            const QuaternionT<hn::Vec<D>> q[1] = {pointOf(false)};
             estimateThreeNumbers<kOrbit, RealThreeNumbersGroup<D>>(d, k, q, live, estimates,
                                                                    counters);
         } else {
-            QuaternionT<hn::Vec<D>> q[1] = {k.quaternionFromWorld(x, y, z)};
+            QuaternionT<hn::Vec<D>> q[1] = {pointOf(false)};
             estimateLanes<kQuadratic, kOrbit>(d, k, q, live, estimates, counters);
         }
         const LaneEstimate<D>& e = estimates[0];
@@ -90,9 +98,9 @@ void estimatePointLanes(D d, const LaneFractal& fractal, const PointBatch& point
                                          });
 }
 
-// Fractal::normal / QuaternionJuliaSet::potentialGradient for a batch of points, M_i iterations in lane i
-// (iterations[i]; without `iterations`, the M that each point's estimate reaches, found on the
-// way: float lanes of z^2 + c with a certified bailout only, LaneConstants::threeNumbers): the
+// Fractal::normal / QuaternionJuliaSet::potentialGradient for a batch of points, M_i iterations in
+// lane i (iterations[i]; without `iterations`, the M that each point's estimate reaches, found on
+// the way: float lanes of z^2 + c with a certified bailout only, LaneConstants::threeNumbers): the
 // gradient of the potential along the slice's axes, then the outward unit normal.
 template <bool kQuadratic, class D>
 void potentialNormalLanes(D d, const LaneFractal& fractal, const PointBatch& points,
