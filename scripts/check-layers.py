@@ -27,6 +27,7 @@ MAY_USE = {
     "quaternia/mesh": ["util", "algebra", "image", "scene", "fractal", "render", "render/lanes"],
     "quaternia/film": ["util", "algebra", "image", "scene", "fractal", "render"],
     "server": ["quaternia/*"],
+    "python": ["quaternia/*"],
     "cmd": ["quaternia/*", "server"],
 }
 
