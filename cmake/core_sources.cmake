@@ -8,6 +8,8 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/dynamics/basins.cpp
   quaternia/dynamics/cycle.cpp
   quaternia/dynamics/orbit.cpp
+  quaternia/dynamics/orbit_report.cpp
+  quaternia/dynamics/cycles_report.cpp
   quaternia/dynamics/connectedness.cpp
   quaternia/dynamics/periodic_points.cpp
   quaternia/dynamics/mandelbrot.cpp

@@ -1,5 +1,7 @@
 // Shared by `quaternia orbit` and `quaternia cycles`: the short flags --formula and --c that set
-// [fractal]'s map; reading --c and --z0 and writing numbers is algebra/constant_text.h's.
+// [fractal]'s map; reading --c and --z0 and writing numbers is algebra/constant_text.h's. What
+// the commands compute from the scene is the library's (dynamics/orbit_report.h,
+// dynamics/cycles_report.h, and scene/scene_fractal.h for the scene's map and c).
 #pragma once
 
 #include <optional>
@@ -9,7 +11,6 @@
 #include <CLI/CLI.hpp>
 
 #include "quaternia/algebra/constant_text.h"
-#include "quaternia/algebra/polynomial.h"
 #include "quaternia/algebra/quaternion.h"
 #include "quaternia/scene/scene.h"
 
@@ -31,19 +32,5 @@ std::string formulaName(const MapFlags& flags);
 
 // q as the table's (1, i, j, k) vector, for setParameter.
 std::vector<double> quaternionValue(const Quaternion& q);
-
-// fractal.c with all of the algebra's components (those past its dimension 0), and the same as
-// the list of its 4 or 8 components (how --json writes it).
-Hypercomplex cOfScene(const Scene& scene);
-std::vector<double> cComponents(const Scene& scene);
-
-// `quaternia cycles` works in the quaternions' complex planes only (orbit and plane take every
-// algebra): a scene in another algebra (fractal.algebra, issue 16) is refused with a UserError
-// naming fractal.algebra rather than silently read as quaternions.
-void requireQuaternionAlgebra(const Scene& scene, const std::string& command);
-
-// The map `formula` with c substituted. Throws UserError naming `name` (formulaName) when it
-// does not parse, or when it has no escape radius (degree below 2, or possibly unbounded).
-Polynomial compileMap(const std::string& formula, const Quaternion& c, const std::string& name);
 
 }  // namespace quaternia

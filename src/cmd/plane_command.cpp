@@ -8,6 +8,7 @@
 #include "quaternia/plane/plane_render.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/atomic_file.h"
 
 namespace quaternia {
