@@ -14,6 +14,7 @@ packages=(
   openmpi-bin libopenmpi-dev
   libcpp-httplib-dev
   python3 chromium chromium-driver python3-selenium
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
   clang-14 libclang-rt-14-dev
 )
 

@@ -29,6 +29,7 @@ from ._quaternia import (
     encode_png,
     frame,
     lane_target,
+    limit_isa,
     presets,
     read_png,
 )
@@ -54,6 +55,7 @@ __all__ = [
     "encode_png",
     "show",
     "lane_target",
+    "limit_isa",
     "read_png",
 ]
 
