@@ -56,6 +56,16 @@ void requireImageMemory(const Scene& scene, uint64_t bytes,
                          "lower render.width and render.height, or pass memory_budget");
 }
 
+// The render of `scene` on `workers` threads (0: every core), with the passes where asked.
+RenderResult renderOf(const Scene& scene, int workers, const py::object& progress, bool passes) {
+    return runWithoutGil(workers, progress, [&](const WorkOptions& work) {
+        RenderOptions options;
+        static_cast<WorkOptions&>(options) = work;
+        options.passes = passes;
+        return render(scene, options);
+    });
+}
+
 int threadsOf(std::optional<int> threads) {
     if (threads && (*threads < 0 || *threads > 1024))
         throw UserError("threads", "threads must be in [0, 1024], got " + std::to_string(*threads));
@@ -75,12 +85,7 @@ py::array renderImage(const Scene& scene, std::optional<int64_t> width,
     // The float image, the passes' linear colour where asked, and the array.
     requireImageMemory(s, pixels * (sizeof(Rgba) * (linear ? 2 : 1) + 4 * sizeof(uint16_t)),
                        memoryBudget, workers);
-    RenderResult result = runWithoutGil(workers, progress, [&](const WorkOptions& work) {
-        RenderOptions options;
-        static_cast<WorkOptions&>(options) = work;
-        options.passes = linear;
-        return render(s, options);
-    });
+    RenderResult result = renderOf(s, workers, progress, linear);
     if (linear) {
         const py::ssize_t w = s.render.width, h = s.render.height;
         return adoptArray<float>(std::move(result.passes.linear), {h, w, 4});
@@ -97,12 +102,7 @@ py::dict renderPasses(const Scene& scene, std::optional<int64_t> width,
     const uint64_t pixels = uint64_t(s.render.width) * uint64_t(s.render.height);
     requireImageMemory(s, pixels * (2 * sizeof(Rgba) + 6 * sizeof(float) + 4 * sizeof(uint16_t)),
                        memoryBudget, workers);
-    RenderResult result = runWithoutGil(workers, progress, [&](const WorkOptions& work) {
-        RenderOptions options;
-        static_cast<WorkOptions&>(options) = work;
-        options.passes = true;
-        return render(s, options);
-    });
+    RenderResult result = renderOf(s, workers, progress, true);
     const py::ssize_t w = s.render.width, h = s.render.height;
     py::dict passes;
     passes["image"] = quantisedArray(result.image, s.render.bitDepth);

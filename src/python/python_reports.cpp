@@ -9,38 +9,31 @@
 namespace quaternia::python {
 namespace {
 
-py::object pythonOf(const Json& json) {
-    const std::string text = jsonText(json);
+// cyclesReport with the period named by its key.
+CyclesReport cyclesOf(const Scene& scene, const std::string& formulaName) {
+    return cyclesReport(scene, formulaName);
+}
+
+// The report `analyse` makes of the scene (computed without the GIL), as its --json text read
+// by Python's json.
+template <auto analyse>
+py::object reportOf(const Scene& scene) {
+    validateScene(scene);
+    std::string text;
+    {
+        py::gil_scoped_release release;
+        text = jsonText(toJson(analyse(scene, "fractal.formula")));
+    }
     return py::module_::import("json").attr("loads")(text);
 }
 
 }  // namespace
 
 void bindReports(py::module_& module) {
-    module.def(
-        "_orbit",
-        [](const Scene& scene) {
-            validateScene(scene);
-            Json json;
-            {
-                py::gil_scoped_release release;
-                json = toJson(orbitReport(scene));
-            }
-            return pythonOf(json);
-        },
-        py::arg("scene"), "The `quaternia orbit --json` object of the scene, as a dict.");
-    module.def(
-        "_cycles",
-        [](const Scene& scene) {
-            validateScene(scene);
-            Json json;
-            {
-                py::gil_scoped_release release;
-                json = toJson(cyclesReport(scene));
-            }
-            return pythonOf(json);
-        },
-        py::arg("scene"), "The `quaternia cycles --json` object of the scene, as a dict.");
+    module.def("_orbit", &reportOf<&orbitReport>, py::arg("scene"),
+               "The `quaternia orbit --json` object of the scene, as a dict.");
+    module.def("_cycles", &reportOf<&cyclesOf>, py::arg("scene"),
+               "The `quaternia cycles --json` object of the scene, as a dict.");
 }
 
 }  // namespace quaternia::python
