@@ -92,6 +92,12 @@ def test_toml_round_trip_and_files(tmp_path):
         quaternia.Scene.from_file(str(tmp_path / "missing.toml"))
 
 
+def test_equality_is_by_value():
+    assert quaternia.Scene() == quaternia.Scene()
+    assert quaternia.Scene() != quaternia.Scene.preset("rabbit")
+    assert quaternia.Scene() != 3
+
+
 def test_presets():
     names = [name for name, _ in quaternia.presets()]
     assert "rabbit" in names and "glass" in names

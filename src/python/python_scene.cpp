@@ -101,8 +101,10 @@ an unknown key UnknownKeyError (a KeyError and a ValueError) with the nearest va
             "copy", [](const Scene& scene) { return Scene(scene); }, "An independent copy.")
         .def("__copy__", [](const Scene& scene) { return Scene(scene); })
         .def("__deepcopy__", [](const Scene& scene, py::dict) { return Scene(scene); })
-        .def("__eq__",
-             [](const Scene& a, const Scene& b) { return sceneToToml(a) == sceneToToml(b); })
+        .def(
+            "__eq__",
+            [](const Scene& a, const Scene& b) { return sceneToToml(a) == sceneToToml(b); },
+            py::is_operator())  // another type: NotImplemented, so `scene == 3` is False
         .def("validate", &validateScene,
              "Checks the conditions between keys (as render does before any work); "
              "ValueError naming the key to change.")
