@@ -66,12 +66,6 @@ RenderResult renderOf(const Scene& scene, int workers, const py::object& progres
     });
 }
 
-int threadsOf(std::optional<int> threads) {
-    if (threads && (*threads < 0 || *threads > 1024))
-        throw UserError("threads", "threads must be in [0, 1024], got " + std::to_string(*threads));
-    return threads.value_or(0);
-}
-
 py::array renderImage(const Scene& scene, std::optional<int64_t> width,
                       std::optional<int64_t> height, std::optional<int64_t> samples,
                       std::optional<int> threads, std::optional<int> bitDepth, bool linear,

@@ -17,10 +17,9 @@ py::dict meshArrays(const Scene& scene, std::optional<int64_t> resolution,
     const Scene s = withOverrides(scene, {{"mesh.resolution", resolution}});
     validateScene(s);
     fractalFromScene(s);  // a bad formula is a ValueError before any work
-    if (threads && (*threads < 0 || *threads > 1024))
-        throw UserError("threads", "threads must be in [0, 1024], got " + std::to_string(*threads));
-    const MemoryBudget budget = memoryBudgetOf(memoryBudget, threads.value_or(0));
-    MeshResult result = runWithoutGil(threads.value_or(0), progress, [&](const WorkOptions& work) {
+    const int workers = threadsOf(threads);
+    const MemoryBudget budget = memoryBudgetOf(memoryBudget, workers);
+    MeshResult result = runWithoutGil(workers, progress, [&](const WorkOptions& work) {
         MeshOptions options{work};
         options.memory = budget;
         return meshScene(s, options);

@@ -56,6 +56,9 @@ Scene withOverrides(const Scene& scene,
 // Throws UnknownKeyError for a name the table does not have, with the nearest one.
 const Parameter& parameterNamed(const std::string& name);
 
+// A call's threads= (None or 0: every core), checked: ValueError naming `threads` outside
+// [0, 1024].
+int threadsOf(std::optional<int> threads);
 // The budget a call's memory_budget names ("512M", "8G", "unlimited"; by default "auto", the
 // memory this process can still take).
 MemoryBudget memoryBudgetOf(const std::optional<std::string>& budget, int threads);

@@ -22,14 +22,13 @@ template <bool kInside>
 py::array query(const Scene& scene, const Points& points, std::optional<int> threads,
                 const py::object& progress) {
     const auto [count, components] = shapeOf(points);
-    if (threads && (*threads < 0 || *threads > 1024))
-        throw UserError("threads", "threads must be in [0, 1024], got " + std::to_string(*threads));
+    const int workers = threadsOf(threads);
     using Out = std::conditional_t<kInside, bool, double>;
     py::array_t<Out> out{py::ssize_t(count)};
     Out* data = out.mutable_data();
     const double* in = points.data();
     const Scene copy = scene;
-    runWithoutGil(threads.value_or(0), progress, [&](const WorkOptions& work) {
+    runWithoutGil(workers, progress, [&](const WorkOptions& work) {
         if constexpr (kInside) {
             static_assert(sizeof(bool) == 1);
             return queryPoints(copy, in, count, components, reinterpret_cast<uint8_t*>(data),

@@ -39,16 +39,14 @@ void flatten(py::handle value, std::vector<double>& out, const Parameter& parame
 }  // namespace
 
 ParameterValue parameterValueOf(const Parameter& parameter, py::handle value) {
-    if (py::isinstance<py::bool_>(value) ||
-        py::isinstance(value, py::module_::import("numpy").attr("bool_")))
+    const py::module_ numpy = py::module_::import("numpy");
+    if (py::isinstance<py::bool_>(value) || py::isinstance(value, numpy.attr("bool_")))
         return value.cast<bool>();
     if (py::isinstance<py::str>(value)) return value.cast<std::string>();
     // Integers (Python's and NumPy's) before floats: an exact integer stays one for an Integer.
-    if (PyLong_Check(value.ptr()) ||
-        py::isinstance(value, py::module_::import("numpy").attr("integer")))
+    if (PyLong_Check(value.ptr()) || py::isinstance(value, numpy.attr("integer")))
         return value.cast<int64_t>();
-    if (PyFloat_Check(value.ptr()) ||
-        py::isinstance(value, py::module_::import("numpy").attr("floating")))
+    if (PyFloat_Check(value.ptr()) || py::isinstance(value, numpy.attr("floating")))
         return value.cast<double>();
     if (py::isinstance<py::array>(value) || PySequence_Check(value.ptr())) {
         std::vector<double> numbers;
@@ -117,6 +115,12 @@ void raiseMemoryError(const std::string& message) {
 void raiseOSError(const std::string& message) {
     PyErr_SetString(PyExc_OSError, message.c_str());
     throw py::error_already_set();
+}
+
+int threadsOf(std::optional<int> threads) {
+    if (threads && (*threads < 0 || *threads > 1024))
+        throw UserError("threads", "threads must be in [0, 1024], got " + std::to_string(*threads));
+    return threads.value_or(0);
 }
 
 MemoryBudget memoryBudgetOf(const std::optional<std::string>& budget, int threads) {
