@@ -58,6 +58,9 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/image/png_read.cpp
   quaternia/image/png_writer.cpp
   quaternia/image/exr_writer.cpp
+  quaternia/image/hdr_image.cpp
+  quaternia/image/hdr_radiance.cpp
+  quaternia/image/hdr_exr.cpp
   quaternia/image/png_pieces.cpp
   quaternia/image/png_stream_writer.cpp
   quaternia/image/png_lanes.cpp
