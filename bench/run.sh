@@ -6,7 +6,7 @@
 # Usage: bench/run.sh [runs]   (build first: cmake --build build)
 #        rows=REGEX bench/run.sh [runs]   only the frame rows whose names match (no films, meshes
 #        or Google Benchmark suite), e.g. rows=algebra bench/run.sh 5; the materials' rows
-#        (rows='reflection|look|glow|three') pair each run with one of the plain frame
+#        (rows='reflection|look|environment|glow|three') pair each run with one of the plain frame
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-5}
@@ -132,9 +132,15 @@ print("%-28s %-10s %8.1f ms %5.2fx plain (plain %6.1f ms) %8.2f Mrays/s  %-7s st
 for target in best avx2; do
   isa=$target paired "reflection-ground-1080p-$target" --set ground.enabled=true \
     --set material.reflectivity=0.6 --set material.max_depth=1
-  for look in studio chrome glass; do
+  for look in studio chrome glass sunset; do
     isa=$target paired "look-$look-1080p-$target" --preset "$look"
   done
+  # The environment (issue 39; the goals: chrome with a map at most 2x the plain frame, the
+  # map's diffuse light with occlusion by 4 shadow rays per hit at most 3x).
+  isa=$target paired "environment-chrome-map-1080p-$target" --preset chrome \
+    --set 'environment.map="data/environments/studio.hdr"'
+  isa=$target paired "environment-light-1080p-$target" --set environment.enabled=true \
+    --set 'environment.map="data/environments/studio.hdr"' --set environment.samples=4
   isa=$target paired "glow-1080p-$target" --set shading.glow_intensity=1
   isa=$target paired "three-lights-1080p-$target" --set light1.enabled=true \
     --set light2.enabled=true --set light2.kind=directional

@@ -48,6 +48,11 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/render/shadow_rays.cpp
   quaternia/render/camera_rays.cpp
   quaternia/render/ground_lighting.cpp
+  quaternia/render/environment.cpp
+  quaternia/render/environment_light.cpp
+  quaternia/render/environment_builtin.cpp
+  quaternia/render/environment_lookup.cpp
+  quaternia/render/lane_environment.cpp
   quaternia/render/lanes/camera_lanes.cpp
   quaternia/render/lanes/shadow_lanes.cpp
   quaternia/render/lanes/point_lanes.cpp

@@ -8,7 +8,7 @@ import { sameValue, tomlValue } from './controls.js';
 
 const ANIMATED_SECTIONS = new Set([
   'fractal', 'slice', 'camera', 'shading', 'light1', 'light2', 'light3', 'light4', 'light5', 'light6',
-  'light7', 'material', 'ground',
+  'light7', 'material', 'ground', 'environment',
 ]);
 const NUMERIC_TYPES =
   new Set(['real', 'integer', 'vector2', 'vector3', 'vector4', 'vector6', 'components']);

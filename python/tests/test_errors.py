@@ -58,3 +58,16 @@ def test_files(tmp_path):
     with pytest.raises(OSError):
         quaternia.read_png(str(tmp_path / "absent.png"))
     assert list(tmp_path.iterdir()) == []  # nothing half-written
+
+
+def test_a_bad_environment_map_names_the_key_and_the_file(tmp_path):
+    scene = quaternia.Scene()
+    scene["environment.enabled"] = True
+    scene["environment.map"] = str(tmp_path / "absent.hdr")
+    with pytest.raises(ValueError, match="environment.map: .*absent.hdr.*no such file"):
+        quaternia.render(scene, 8, 8)
+    picture = tmp_path / "picture.png"
+    quaternia.render(quaternia.Scene(), 8, 8).save(str(picture))
+    scene["environment.map"] = str(picture)
+    with pytest.raises(ValueError, match="not an HDR image"):
+        quaternia.render_passes(scene, 8, 8)

@@ -111,6 +111,7 @@ int runRenderCommand(const RenderCommandOptions& options) {
                        (exr ? renderExrMemoryBytes(scene) : 0) +
                            renderPngMemoryBytes(scene, !options.depthOutput.empty()),
                        options, "the render");
+    requireEnvironment(scene, options);
     if (exr) return renderExr(options, scene);
     AtomicFile output(options.output);
     std::optional<AtomicFile> depthOutput;

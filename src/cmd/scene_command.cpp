@@ -4,6 +4,7 @@
 
 #include <sys/stat.h>
 
+#include "quaternia/render/environment.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
@@ -62,6 +63,10 @@ void requireImageMemory(const Scene& scene, uint64_t bytes, const SceneCommandOp
                   "render.width x render.height = " + std::to_string(scene.render.width) + " x " +
                       std::to_string(scene.render.height) + ": " + what,
                   "lower render.width and render.height, or set --memory-budget");
+}
+
+void requireEnvironment(const Scene& scene, const SceneCommandOptions& options) {
+    environmentOf(scene, memoryBudgetFromOptions(options));
 }
 
 Scene sceneFromOptions(const SceneCommandOptions& options) {

@@ -55,6 +55,11 @@ MemoryBudget memoryBudgetFromOptions(const SceneCommandOptions& options);
 void requireImageMemory(const Scene& scene, uint64_t bytes, const SceneCommandOptions& options,
                         const std::string& what);
 
+// Reads the scene's environment map (environment.map) within the budget of --memory-budget,
+// before the work: a missing, unreadable or non-HDR file, one that is not 2:1 or too large is a
+// UserError naming environment.map. The renders then take it from environmentOf's cache.
+void requireEnvironment(const Scene& scene, const SceneCommandOptions& options);
+
 // Where a command's summary goes: standard output, unless one of `outputs` is standard output
 // itself (-o /dev/stdout, or a path to the file or pipe that fd 1 is), where the summary would be
 // written into the image; then standard error.

@@ -6,6 +6,7 @@
 #include "quaternia/image/png_lanes.h"
 #include "quaternia/image/png_writer.h"
 #include "quaternia/plane/plane_render.h"
+#include "quaternia/render/environment.h"
 #include "quaternia/render/render.h"
 #include "quaternia/render/render_png.h"
 #include "quaternia/util/error.h"
@@ -79,6 +80,8 @@ py::array renderImage(const Scene& scene, std::optional<int64_t> width,
     // The float image, the passes' linear colour where asked, and the array.
     requireImageMemory(s, pixels * (sizeof(Rgba) * (linear ? 2 : 1) + 4 * sizeof(uint16_t)),
                        memoryBudget, workers);
+    // The environment map read (and checked) here, before the work: ValueError, MemoryError.
+    environmentOf(s, memoryBudgetOf(memoryBudget, workers));
     RenderResult result = renderOf(s, workers, progress, linear);
     if (linear) {
         const py::ssize_t w = s.render.width, h = s.render.height;
@@ -96,6 +99,8 @@ py::dict renderPasses(const Scene& scene, std::optional<int64_t> width,
     const uint64_t pixels = uint64_t(s.render.width) * uint64_t(s.render.height);
     requireImageMemory(s, pixels * (2 * sizeof(Rgba) + 6 * sizeof(float) + 4 * sizeof(uint16_t)),
                        memoryBudget, workers);
+    // The environment map read (and checked) here, before the work: ValueError, MemoryError.
+    environmentOf(s, memoryBudgetOf(memoryBudget, workers));
     RenderResult result = renderOf(s, workers, progress, true);
     const py::ssize_t w = s.render.width, h = s.render.height;
     py::dict passes;

@@ -29,7 +29,7 @@ std::string printable(std::string text) {
 }
 
 std::string what(const Source& source) {
-    return "the environment map '" + source.path + "'";
+    return source.key + ": the map '" + source.path + "'";
 }
 
 constexpr const char* kAdvice = "use a smaller map or raise --memory-budget";

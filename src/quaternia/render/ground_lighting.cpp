@@ -86,6 +86,26 @@ void GroundLighting::light(const std::vector<GroundPoint>& points, const Frame& 
     lightSurfaces(frame.lightConstants, lit);
     for (size_t g = 0; g < count; ++g)
         colour_[g] += Color(lit.red[g], lit.green[g], lit.blue[g]);
+    if (!shader.environmentLighting()) return;
+    const Environment& environment = *shader.environment();
+    if (environment.samples() == 0) {
+        // Unshadowed: the same light at every point of a side of the plane.
+        const Color above = albedo * environment.diffuse({0, 1, 0});
+        const Color below = albedo * environment.diffuse({0, -1, 0});
+        for (size_t g = 0; g < count; ++g)
+            colour_[g] += points[g].normal().y > 0 ? above : below;
+        return;
+    }
+    // The environment's light, shadowed by the set: its contact shadow on the ground.
+    const double offset = 1e-6 * frame.boundingRadius;
+    environmentPoints_.resize(count);
+    for (size_t g = 0; g < count; ++g) {
+        const GroundPoint& p = points[g];
+        environmentPoints_[g] = {p.x, p.x + p.normal() * offset, p.normal(), albedo};
+    }
+    environment_.light(frame.lanes, shader, environmentPoints_, shadows, counters);
+    for (size_t g = 0; g < count; ++g)
+        colour_[g] += environment_.colour()[g];
 }
 
 }  // namespace quaternia

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "quaternia/render/lane_environment.h"
 #include "quaternia/render/lanes/shading_lanes.h"
 #include "quaternia/render/path_waves.h"
 #include "quaternia/render/shadow_rays.h"
@@ -44,6 +45,8 @@ class GroundLighting {
     std::vector<double> keyVisibility_, otherVisibility_;
     std::vector<Color> colour_;
     SurfaceBatch surfaces_;
+    EnvironmentShadows environment_;
+    std::vector<EnvironmentPoint> environmentPoints_;
 };
 
 }  // namespace quaternia

@@ -116,13 +116,32 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
     sampleSurfaces();
     lightSurfaces(lightConstants_, surfaces_);  // the colours: surfaces_.red, green, blue
     if (!shader_->extraLights().empty()) lightOthers(stats);
+    if (shader_->environmentLighting()) lightByEnvironment(stats);
+}
+
+void LaneTileRenderer::lightByEnvironment(LaneTileStats& stats) {
+    environmentPoints_.resize(hits_.size());
+    for (size_t h = 0; h < hits_.size(); ++h) {
+        const Point3d& x = hits_[h].outside;
+        environmentPoints_[h] = {
+            x, shader_->shadowOrigin(x, normals_[h], camera_->pixelFootprint(hits_[h].t)),
+            normals_[h], Color(surfaces_.albedoR[h], surfaces_.albedoG[h], surfaces_.albedoB[h])};
+    }
+    environmentShadows_.light(lanes_, *shader_, environmentPoints_, shadows_, stats.shading);
+    const std::vector<Color>& added = environmentShadows_.colour();
+    for (size_t h = 0; h < hits_.size(); ++h) {
+        surfaces_.red[h] += float(added[h].x);
+        surfaces_.green[h] += float(added[h].y);
+        surfaces_.blue[h] += float(added[h].z);
+    }
 }
 
 void LaneTileRenderer::hitNormals(LaneTileStats& stats) {
     const size_t count = hits_.size();
     // The estimate at each hit's outside point, where the orbit colours the surface: its
-    // iteration count is then the M of the analytic normal (QuaternionJuliaSet::gradientIterations).
-    // Without orbit colouring, the normals find their M themselves.
+    // iteration count is then the M of the analytic normal
+    // (QuaternionJuliaSet::gradientIterations). Without orbit colouring, the normals find their M
+    // themselves.
     if (shader_->albedoUsesOrbit()) {
         estimatePoints(lanes_, hitPoints_, hitEstimates_, stats.shading);
         gradientIterations_.resize(count);

@@ -13,6 +13,7 @@
 #include "quaternia/render/camera.h"
 #include "quaternia/render/camera_rays.h"
 #include "quaternia/render/ground_lighting.h"
+#include "quaternia/render/lane_environment.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/march.h"
 #include "quaternia/render/path_waves.h"
@@ -120,6 +121,10 @@ class LaneTileRenderer : private SampleTracer, private WaveEngine {
     // The lights of [light1] .. [light7] at the hits of hits_, added to surfaces_' colours.
     void lightOthers(LaneTileStats& stats);
     std::vector<KeyLight> otherLights_;
+    // The environment's light at the hits of hits_ (lane_environment.h), added to surfaces_'.
+    void lightByEnvironment(LaneTileStats& stats);
+    EnvironmentShadows environmentShadows_;
+    std::vector<EnvironmentPoint> environmentPoints_;
     std::vector<PointEstimate> exitEstimates_;  // outwardNormals'
 
     // The rays of traced_ that ended on the set, into hits_ and hitPoints_.

@@ -8,6 +8,7 @@
 
 #include "quaternia/render/optics.h"
 #include "quaternia/render/path_waves.h"
+#include "quaternia/render/sample_pattern.h"
 
 namespace quaternia {
 namespace {
@@ -17,19 +18,6 @@ constexpr int kExitBisections = 6;
 
 Color exponential(const Color& c) {
     return Color(std::exp(c.x), std::exp(c.y), std::exp(c.z));
-}
-
-// A hash of three integers to [0, 1) (Wang-style integer mixing), for the glossy directions:
-// the same for the same pixel sample in every run.
-double hashUnit(uint32_t a, uint32_t b, uint32_t c) {
-    uint32_t h =
-        a * 0x9E3779B1u ^ (b + 0x7F4A7C15u) * 0x85EBCA77u ^ (c + 0x165667B1u) * 0xC2B2AE3Du;
-    h ^= h >> 16;
-    h *= 0x7FEB352Du;
-    h ^= h >> 15;
-    h *= 0x846CA68Bu;
-    h ^= h >> 16;
-    return double(h) / 4294967296.0;
 }
 
 }  // namespace
@@ -85,7 +73,11 @@ void PathWaves::shadeSetHits() {
             Vector3d direction = reflect(d, n);
             if (material_.roughness > 0) direction = glossy(direction, n, sample, path.depth);
             const Ray ray{shader_->shadowOrigin(hits_[h].outside, n, footprint), direction};
-            spawn(path, ray, path.weight * (kept * reflected), travelled, false);
+            // Half the lobe's blur from the environment's pre-filtered levels, so that one
+            // sample already shows it smooth; the rest from the sampled directions, as the set's
+            // own reflections get it.
+            spawn(path, ray, path.weight * (kept * reflected), travelled, false,
+                  0.5 * material_.roughness);
         }
         if (refracted > 0) {
             // Entering from outside never reflects totally.

@@ -106,6 +106,7 @@ void PathWaves::trace(WaveEngine& engine, const Tile& tile, int sampleKey,
         outside_.swap(nextOutside_);
         inside_.swap(nextInside_);
     }
+    addEscapes();
     for (const SampleResult& sample : sampleResults_)
         addSample(pixels, sample);
     engine_ = nullptr;
@@ -138,15 +139,35 @@ void PathWaves::addSample(std::vector<PixelSamples>& pixels, const SampleResult&
 void PathWaves::seeBackground(const PathRay& path) {
     // A camera ray's background is the pixel's, composited when it is finished.
     if (path.camera) return;
-    sampleResults_[size_t(path.sample)].color += path.weight * shader_->background(path.ray);
+    addBackground(path.sample, path.weight, path.ray, path.spread);
+}
+
+void PathWaves::addBackground(int sample, const Color& weight, const Ray& ray, double spread) {
+    if (!shader_->environmentSeen()) {
+        sampleResults_[size_t(sample)].color += weight * shader_->background(ray, spread);
+        return;
+    }
+    escapes_.push_back({sample, weight});
+    escapeDirections_.push_back(ray.direction);
+    escapeSpreads_.push_back(spread);
+}
+
+void PathWaves::addEscapes() {
+    escapeRadiance_.resize(escapes_.size());
+    shader_->backgrounds(escapeDirections_, escapeSpreads_, escapeRadiance_);
+    for (size_t i = 0; i < escapes_.size(); ++i)
+        sampleResults_[size_t(escapes_[i].sample)].color += escapes_[i].weight * escapeRadiance_[i];
+    escapes_.clear();
+    escapeDirections_.clear();
+    escapeSpreads_.clear();
 }
 
 void PathWaves::spawn(const PathRay& parent, const Ray& ray, const Color& weight, double travelled,
-                      bool inside) {
+                      bool inside, double spread) {
     if (!(largest(weight) > 0)) return;
     if (parent.depth + 1 > material_.maxDepth || largest(weight) < kLeastWeight) {
         // Out of bounces: what is left sees the background, as if it escaped.
-        sampleResults_[size_t(parent.sample)].color += weight * shader_->background(ray);
+        addBackground(parent.sample, weight, ray, spread);
         return;
     }
     PathRay child;
@@ -155,6 +176,7 @@ void PathWaves::spawn(const PathRay& parent, const Ray& ray, const Color& weight
     child.weight = weight;
     child.travelled = travelled;
     child.depth = parent.depth + 1;
+    child.spread = spread;
     (inside ? nextInside_ : nextOutside_).push_back(child);
 }
 

@@ -131,6 +131,9 @@ class PathWaves {
         int depth = 0;
         bool camera = false;
         int block = -1;
+        // The blur of the environment it sees, in radians (a glossy reflection's, Shader::
+        // background).
+        double spread = 0;
     };
     // A camera sample's result: colour (premultiplied) and alpha, its first hit (depth,
     // normal, trap) and what it hit.
@@ -171,10 +174,15 @@ class PathWaves {
     void traceInsideWave();
     // What a ray that hits neither the set nor (usable) ground sees: the background.
     void seeBackground(const PathRay& path);
+    // weight times the background along `ray` added to sample `sample`: at once, or, where the
+    // environment is seen, at the end of the batch with the others (addEscapes: the map read
+    // for many rays together, Shader::backgrounds).
+    void addBackground(int sample, const Color& weight, const Ray& ray, double spread);
+    void addEscapes();
     // Queues a child ray of `parent` (or, past the depth or below the weight worth a ray, adds
     // the background along it to its sample).
     void spawn(const PathRay& parent, const Ray& ray, const Color& weight, double travelled,
-               bool inside);
+               bool inside, double spread = 0);
     // The ground: where ray meets the plane (infinity where not ahead).
     double groundDistance(const Ray& ray) const;
     // The ground hits of a wave (groundHits_), into their samples, their reflections queued.
@@ -218,6 +226,15 @@ class PathWaves {
     std::vector<double> insideFar_, insideDistances_;
     std::vector<size_t> insideActive_;
     std::vector<Vector3d> exitNormals_;
+    // The rays that left the scene, their backgrounds to add (addBackground).
+    struct Escape {
+        int sample;
+        Color weight;
+    };
+    std::vector<Escape> escapes_;
+    std::vector<Vector3d> escapeDirections_;
+    std::vector<double> escapeSpreads_;
+    std::vector<Color> escapeRadiance_;
 };
 
 }  // namespace quaternia

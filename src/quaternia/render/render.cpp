@@ -213,7 +213,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
                              RenderResult& result)
     : fractal_(fractalFromScene(scene)),
       camera_(scene.camera, scene.render.width, scene.render.height),
-      shader_(scene.shading, fractal_, scene.lights),
+      shader_(scene.shading, fractal_, scene.lights, environmentOf(scene, options.memory)),
       material_(scene.material),
       ground_(scene.ground),
       paths_(PathWaves::neededFor(scene.material, scene.ground, scene.shading.glowIntensity)),
@@ -232,7 +232,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
       passes_(options.passes),
       depthNear_(std::max(0.0, length(scene.camera.position) - fractal_.boundingRadius())),
       depthRange_(length(scene.camera.position) + fractal_.boundingRadius() - depthNear_),
-      uniformBackground_(shader_.backgroundTop() == shader_.backgroundBottom()),
+      uniformBackground_(shader_.uniformBackground()),
       backgroundColor_(float(shader_.backgroundBottom().x), float(shader_.backgroundBottom().y),
                        float(shader_.backgroundBottom().z)),
       backgroundDisplay_{float(backgroundColor_.x), float(backgroundColor_.y),
@@ -413,8 +413,28 @@ void FrameRenderer::finishRowsOnBackgroundRows(const Tile& tile, ThreadTotals& t
     for (int py = tile.y0; py < tile.y1; ++py) {
         Rgba* row = rows_.row(thread, tile, py);
         const Camera::RowDirections directions = camera_.rowDirections(py);
-        shader_.backgroundRow(directions.first, directions.step, tile.x0, width,
-                              opaque_ ? 1.0f : 0.0f, row);
+        const float alpha = opaque_ ? 1.0f : 0.0f;
+        if (!shader_.environmentBackground()) {
+            shader_.backgroundRow(directions.first, directions.step, tile.x0, width, alpha, row);
+        } else {
+            // A map costs more than a gradient: only the runs of pixels that show some of it
+            // (a sample that missed; finishPixel reads it nowhere else).
+            auto showsBackground = [](const PixelSamples& p) {
+                return p.hits != p.samples || p.uncovered != 0;
+            };
+            for (int i = 0; i < width;) {
+                if (!showsBackground(pixel[i])) {
+                    ++i;
+                    continue;
+                }
+                int end = i + 1;
+                while (end < width && showsBackground(pixel[end]))
+                    ++end;
+                shader_.backgroundRow(directions.first, directions.step, tile.x0 + i, end - i,
+                                      alpha, row + i);
+                i = end;
+            }
+        }
         for (int i = 0; i < width; ++i, ++pixel) {
             if (pixel->hits == 0 && !depth_ && !passes_) continue;
             thread.stats.hits += pixel->hits;

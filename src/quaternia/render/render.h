@@ -12,6 +12,7 @@
 #include "quaternia/image/image.h"
 #include "quaternia/image/png_writer.h"
 #include "quaternia/scene/scene.h"
+#include "quaternia/util/memory_budget.h"
 #include "quaternia/util/parallel.h"
 
 namespace quaternia {
@@ -52,6 +53,8 @@ struct RenderOptions : WorkOptions {
     // all of them (or adaptive sampling): bench/adaptive_study renders the samples one by one
     // to measure what an adaptive sampler could save. -1: every sample.
     int onlySample = -1;
+    // What the environment map may take (environment.map, read before the work).
+    MemoryBudget memory = {};
 };
 
 // What RenderOptions::window's corner must be a multiple of: the largest tile side.

@@ -39,7 +39,30 @@ struct EngineDifference {
     std::array<double, 4> bias{};  // mean signed difference, lanes less reference
 };
 
-EngineDifference compareEngines(Scene scene) {
+// The images averaged over blocks of block x block pixels (block 1: as they are).
+Image blockAverage(const Image& image, int block) {
+    if (block == 1) return image;
+    Image out(image.width() / block, image.height() / block);
+    for (int y = 0; y < out.height(); ++y)
+        for (int x = 0; x < out.width(); ++x) {
+            Rgba sum{0, 0, 0, 0};
+            for (int dy = 0; dy < block; ++dy)
+                for (int dx = 0; dx < block; ++dx) {
+                    const Rgba& p = image.at(x * block + dx, y * block + dy);
+                    sum.r += p.r, sum.g += p.g, sum.b += p.b, sum.a += p.a;
+                }
+            const float n = float(block * block);
+            out.at(x, y) = Rgba{sum.r / n, sum.g / n, sum.b / n, sum.a / n};
+        }
+    return out;
+}
+
+// block: the differences measured on block x block averages (the signed mean is the same):
+// the looks in the built-in studio, whose soft boxes are small and 100 times brighter than the
+// rest, turn the two marchers' slightly different hit points into bright sparkles of glass and
+// chrome at different pixels: noise of the paths (the signed mean stays within 0.07/255), which
+// averaging over blocks separates from a difference of structure.
+EngineDifference compareEngines(Scene scene, int block = 1) {
     scene.render.engine = RenderEngine::Simd;
     const RenderResult lanes = render(scene);
     scene.render.engine = RenderEngine::Scalar;
@@ -49,12 +72,14 @@ EngineDifference compareEngines(Scene scene) {
     // Not two empty pictures: every scene here shows the set.
     EXPECT_GT(reference.stats.hits, reference.stats.rays / 50);
     EngineDifference d;
-    const int width = scene.render.width, height = scene.render.height;
+    const Image lanesImage = blockAverage(lanes.image, block);
+    const Image referenceImage = blockAverage(reference.image, block);
+    const int width = lanesImage.width(), height = lanesImage.height();
     int far = 0;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            const Rgba& a = lanes.image.at(x, y);
-            const Rgba& b = reference.image.at(x, y);
+            const Rgba& a = lanesImage.at(x, y);
+            const Rgba& b = referenceImage.at(x, y);
             const std::array<double, 4> apart{std::abs(a.r - b.r), std::abs(a.g - b.g),
                                               std::abs(a.b - b.b), std::abs(a.a - b.a)};
             double pixel = 0;
@@ -76,8 +101,8 @@ EngineDifference compareEngines(Scene scene) {
     return d;
 }
 
-void expectEnginesAgree(const Scene& scene, const std::string& name) {
-    const EngineDifference d = compareEngines(scene);
+void expectEnginesAgree(const Scene& scene, const std::string& name, int block = 1) {
+    const EngineDifference d = compareEngines(scene, block);
     std::printf(
         "%-14s mean |difference| %.3f %.3f %.3f %.3f, mean difference %.3f %.3f %.3f "
         "%.3f (1/255), %.2f%% of pixels over 16/255\n",
@@ -103,7 +128,9 @@ TEST(RenderEngines, EveryPresetAndLookAgrees) {
         if (!testing::runsCase(index++, 2)) continue;
         Scene scene = defaultScene();
         applyPreset(scene, preset.name);
-        expectEnginesAgree(small(scene), preset.name);
+        const bool studio =
+            scene.environment.enabled && scene.environment.builtin == EnvironmentBuiltin::Studio;
+        expectEnginesAgree(small(scene), preset.name, studio ? 4 : 1);
     }
 }
 
@@ -123,6 +150,21 @@ TEST(RenderEngines, EveryMaterialFeatureAtOnceAgrees) {
     expectEnginesAgree(scene, "every feature");
     scene.render.adaptive = true;
     expectEnginesAgree(scene, "adaptive");
+}
+
+// The environment (issue 39): the built-in studio seen by glossy reflections and the background,
+// its light on the set and the ground shadowed by 4 rays a hit; the built-in sky with its sun.
+TEST(RenderEngines, EnvironmentLightAgrees) {
+    Scene scene = small(defaultScene());
+    for (const char* assignment :
+         {"environment.enabled=true", "environment.builtin=studio", "environment.samples=4",
+          "environment.rotation=40", "material.reflectivity=0.3", "material.roughness=0.2",
+          "ground.enabled=true", "shading.light_intensity=0.3", "shading.ambient=0"})
+        applyOverride(scene, assignment);
+    expectEnginesAgree(scene, "studio", 4);
+    applyOverride(scene, "environment.builtin=sky");
+    applyOverride(scene, "environment.background=false");
+    expectEnginesAgree(scene, "sky");
 }
 
 }  // namespace

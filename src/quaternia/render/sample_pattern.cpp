@@ -41,4 +41,15 @@ std::array<double, 2> lensSample(int k, int px, int py) {
     return {wrap(ox + a1 * k), wrap(oy + a2 * k)};
 }
 
+double hashUnit(uint32_t a, uint32_t b, uint32_t c) {
+    uint32_t h =
+        a * 0x9E3779B1u ^ (b + 0x7F4A7C15u) * 0x85EBCA77u ^ (c + 0x165667B1u) * 0xC2B2AE3Du;
+    h ^= h >> 16;
+    h *= 0x7FEB352Du;
+    h ^= h >> 15;
+    h *= 0x846CA68Bu;
+    h ^= h >> 16;
+    return double(h) / 4294967296.0;
+}
+
 }  // namespace quaternia

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 namespace quaternia {
 
@@ -15,5 +16,8 @@ std::array<double, 2> samplePosition(int k, int n, int px, int py);
 // prefix of the samples) turned by an offset hashed from the pixel, so that neighbouring pixels
 // do not repeat the same lens points (which would show as a ghost image instead of blur).
 std::array<double, 2> lensSample(int k, int px, int py);
+// A hash of three integers to [0, 1) (Wang-style integer mixing), for directions drawn per
+// sample (glossy lobes, the environment's shadow rays): the same for the same key in every run.
+double hashUnit(uint32_t a, uint32_t b, uint32_t c);
 
 }  // namespace quaternia

@@ -98,6 +98,8 @@ void ScalarWaves::lightGround(const std::vector<GroundPoint>& points, bool) {
         surface.occlusion = 1;
         if (facing) keyVisibility_[g] = surface.visibility;
         groundColour_[g] += shader_.light(surface, Ray{p.x, p.direction});
+        if (shader_.environmentLighting())
+            groundColour_[g] += shader_.environmentLight(p.x, origin, n, albedo, shading_);
     }
 }
 

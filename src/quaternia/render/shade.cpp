@@ -39,9 +39,11 @@ double smoothstep(double a, double b, double v) {
 }  // namespace
 
 Shader::Shader(const ShadingSettings& settings, const Fractal& fractal,
-               std::span<const LightSettings> extraLights)
+               std::span<const LightSettings> extraLights,
+               std::shared_ptr<const Environment> environment)
     : settings_(settings),
       fractal_(fractal),
+      environment_(std::move(environment)),
       boundingRadius_(fractal.boundingRadius()),
       lightDirection_(normalize(settings.lightDirection)),
       fillDirection_(normalize(settings.fillDirection)),
@@ -75,6 +77,9 @@ Shader::Shader(const ShadingSettings& settings, const Fractal& fractal,
     lights_.push_back(key);
     for (const LightSettings& light : extraLights)
         if (light.enabled) lights_.push_back(lightSourceOf(light));
+    if (environment_ && environment_->sun()) lights_.push_back(lightSourceOf(*environment_->sun()));
+    environmentShadows_.kind = LightKind::Directional;
+    environmentShadows_.shadows = Shadows::Hard;
     // Infinitely far, the background is all fog.
     if (settings_.fogDensity > 0)
         settings_.backgroundTop = settings_.backgroundBottom = settings_.fogColor;
@@ -308,7 +313,28 @@ Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingSta
             shadowOf(shadowOrigin(hit.outside, sample.normal, footprint), at, other, stats);
         color += lightOther(other, at, sample.normal, sample.albedo, ray.direction, visibility);
     }
+    if (environmentLighting())
+        color += environmentLight(hit.outside, shadowOrigin(hit.outside, sample.normal, footprint),
+                                  sample.normal, sample.albedo, stats);
     return color;
+}
+
+Color Shader::environmentLight(const Point3d& point, const Point3d& origin, const Vector3d& n,
+                               const Color& albedo, ShadingStats& stats) const {
+    const int count = environment_->samples();
+    std::array<EnvironmentDirection, 64> directions;
+    std::array<double, 64> visibility;
+    const std::span<EnvironmentDirection> rays(directions.data(), size_t(count));
+    environment_->shadowDirections(Environment::seedOf(point), n, rays);
+    for (int k = 0; k < count; ++k) {
+        visibility[size_t(k)] = 1;
+        if (!(directions[size_t(k)].weight > 0)) continue;
+        const KeyLight towards{directions[size_t(k)].direction, 1,
+                               std::numeric_limits<double>::infinity()};
+        visibility[size_t(k)] = shadowOf(origin, towards, environmentShadows_, stats);
+    }
+    return environment_->occludedDiffuse(n, albedo, rays,
+                                         std::span<const double>(visibility.data(), size_t(count)));
 }
 
 Color Shader::lightOther(const LightSource& light, const KeyLight& at, const Vector3d& normal,
@@ -346,13 +372,32 @@ LightConstants Shader::lightConstants() const {
     return k;
 }
 
-Color Shader::background(const Ray& ray) const {
+void Shader::backgrounds(std::span<const Vector3d> directions, std::span<const double> spreads,
+                         std::span<Color> out) const {
+    if (environmentSeen()) {
+        environment_->radianceBatch(directions, spreads, out);
+        return;
+    }
+    for (size_t i = 0; i < directions.size(); ++i)
+        out[i] = background(Ray{Point3d(), directions[i]}, spreads[i]);
+}
+
+bool Shader::environmentBackground() const {
+    return environment_ && environment_->background() && !(settings_.fogDensity > 0);
+}
+
+Color Shader::background(const Ray& ray, double spread) const {
+    if (environmentSeen()) return environment_->radiance(ray.direction, spread);
     double v = 0.5 + 0.5 * ray.direction.y;
     return lerp(settings_.backgroundBottom, settings_.backgroundTop, v);
 }
 
 void Shader::backgroundRow(const Vector3d& first, const Vector3d& step, int x0, int count,
                            float alpha, Rgba* out) const {
+    if (environmentBackground()) {
+        environment_->radianceRow(first, step, x0, count, alpha, out);
+        return;
+    }
     // The direction's y and its length, as background() takes them from the normalised ray.
     const float ax = float(first.x), ay = float(first.y), az = float(first.z);
     const float bx = float(step.x), by = float(step.y), bz = float(step.z);

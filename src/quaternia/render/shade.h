@@ -7,12 +7,14 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/image/image.h"
+#include "quaternia/render/environment.h"
 #include "quaternia/render/lanes/shading_lanes.h"
 #include "quaternia/render/march.h"
 #include "quaternia/scene/scene.h"
@@ -62,9 +64,11 @@ LightSource lightSourceOf(const LightSettings& settings);
 
 class Shader {
   public:
-    // extraLights: [light1] .. [light7] (only the enabled ones shine).
+    // extraLights: [light1] .. [light7] (only the enabled ones shine). environment: the world
+    // around the scene (environmentOf), or none; its sun shines as one more light.
     Shader(const ShadingSettings& settings, const Fractal& fractal,
-           std::span<const LightSettings> extraLights = {});
+           std::span<const LightSettings> extraLights = {},
+           std::shared_ptr<const Environment> environment = nullptr);
 
     // Linear colour of the surface at `hit`, seen along `ray`. `footprint` is the pixel
     // footprint at the hit, the scale of the offsets that leave the surface.
@@ -73,9 +77,33 @@ class Shader {
     // hits, path_waves.h).
     Color shade(const Hit& hit, const Ray& ray, double footprint, ShadingStats& stats,
                 SurfaceSample* surface = nullptr, bool occlusion = true) const;
-    // The background seen along a ray that misses: a vertical gradient (the fog colour where
-    // there is fog: backgroundTop() and backgroundBottom() are then the fog's).
-    Color background(const Ray& ray) const;
+    // What a ray that leaves the scene sees: the environment (blurred over `spread` radians,
+    // a glossy reflection's), or else the vertical gradient; the fog's colour where there is
+    // fog (backgroundTop() and backgroundBottom() are then the fog's).
+    Color background(const Ray& ray, double spread = 0) const;
+    // Whether rays that leave the scene see the environment (there is one, and no fog); then
+    // Shader::backgrounds reads many at once.
+    bool environmentSeen() const { return environment_ && !(settings_.fogDensity > 0); }
+    // background() of many unit directions and spreads (environmentSeen(): vectorised).
+    void backgrounds(std::span<const Vector3d> directions, std::span<const double> spreads,
+                     std::span<Color> out) const;
+    // What a camera ray that misses sees, where backgroundRow gives it: the gradient, or the
+    // environment where it is shown (environment.background).
+    bool environmentBackground() const;
+    // Whether every camera ray that misses sees the same colour (backgroundBottom()).
+    bool uniformBackground() const {
+        return !environmentBackground() && settings_.backgroundTop == settings_.backgroundBottom;
+    }
+    // The environment's diffuse light on surfaces (environment.lighting), and the light for
+    // its shadow rays (hard, directional: Shader::shadowOf with the ray's direction).
+    const Environment* environment() const { return environment_.get(); }
+    bool environmentLighting() const { return environment_ && environment_->lighting(); }
+    const LightSource& environmentShadows() const { return environmentShadows_; }
+    // The environment's light at a surface point (unit normal n, facing the light), its shadow
+    // rays marched from `origin` (a little off the surface) in double: what the lanes compute
+    // in batches (lane_environment.h), the same directions and formula.
+    Color environmentLight(const Point3d& point, const Point3d& origin, const Vector3d& n,
+                           const Color& albedo, ShadingStats& stats) const;
     const Color& backgroundTop() const { return settings_.backgroundTop; }
     const Color& backgroundBottom() const { return settings_.backgroundBottom; }
     // Light of colour c from distance t seen through the fog (Beer-Lambert: exp(-density t) of
@@ -191,6 +219,8 @@ class Shader {
   private:
     ShadingSettings settings_;
     const Fractal& fractal_;
+    std::shared_ptr<const Environment> environment_;
+    LightSource environmentShadows_;
     // fractal_.boundingRadius(), which per shaded point was a cost of its own (a virtual call).
     double boundingRadius_;
     Vector3d lightDirection_, fillDirection_;

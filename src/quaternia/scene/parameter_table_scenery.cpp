@@ -1,6 +1,6 @@
 // The table entries of the scene around the set: the lights besides the key light
 // ([light1] .. [light7], each section built by the same function), the set's material
-// ([material]) and the ground plane ([ground]).
+// ([material]), the ground plane ([ground]) and the world around them ([environment]).
 #include <iterator>
 #include <string>
 #include <vector>
@@ -110,13 +110,63 @@ std::vector<Parameter> groundParameters() {
     };
 }
 
+// [environment]: the world around the scene as light: a map or the built-in sky or studio.
+std::vector<Parameter> environmentParameters() {
+    using S = Scene;
+    using E = EnvironmentSettings;
+    const std::vector<std::pair<std::string, EnvironmentBuiltin>> builtins = {
+        {"sky", EnvironmentBuiltin::Sky}, {"studio", EnvironmentBuiltin::Studio}};
+    return {
+        booleanParameter("environment", "enabled", &S::environment, &E::enabled, false,
+                         "Whether an environment surrounds the scene: what reflections, "
+                         "refractions and the background see, and light on the set"),
+        textParameter("environment", "map", &S::environment, &E::map, "", 0, 4096,
+                      "A latitude-longitude HDR image (OpenEXR .exr or Radiance .hdr, twice as "
+                      "wide as high), its top row towards camera.up; empty: the built-in"),
+        choiceParameter("environment", "builtin", &S::environment, &E::builtin, "sky", builtins,
+                        "Without a map: sky (a gradient and a sun, the sun_* and *_color keys) "
+                        "or studio (soft boxes over a dark floor)"),
+        realParameter("environment", "intensity", &S::environment, &E::intensity, 1, 0, 1e4,
+                      "Multiplies the environment's radiance (not the sun's)"),
+        realParameter("environment", "rotation", &S::environment, &E::rotation, 0, -3600, 3600,
+                      "Turns the environment by this many degrees about camera.up's axis"),
+        booleanParameter("environment", "background", &S::environment, &E::background, true,
+                         "Show the environment behind the set (false: the shading.background "
+                         "gradient; reflections still see the environment)"),
+        booleanParameter("environment", "lighting", &S::environment, &E::lighting, true,
+                         "Light the set and the ground with the environment's diffuse light"),
+        integerParameter("environment", "samples", &S::environment, &E::samples, 4, 0, 64,
+                         "Shadow rays per hit towards the environment (importance-sampled): the "
+                         "set's occlusion of its light; 0 lights without occlusion"),
+        vectorParameter("environment", "sun_direction", &S::environment, &E::sunDirection,
+                        {0.6, 0.5, -0.4}, -1e3, 1e3,
+                        "Direction towards the built-in sky's sun; any length"),
+        realParameter("environment", "sun_intensity", &S::environment, &E::sunIntensity, 2, 0, 1e4,
+                      "The sun's irradiance, as a directional light's intensity (0: no sun)"),
+        realParameter("environment", "sun_size", &S::environment, &E::sunSize, 0.8, 0.05, 20,
+                      "The sun's angular radius in degrees (the real sun's is 0.27): its disc and "
+                      "its shadows' penumbrae"),
+        vectorParameter("environment", "sun_color", &S::environment, &E::sunColor,
+                        {1.0, 0.95, 0.85}, 0, 100, "Linear RGB colour of the sun"),
+        vectorParameter("environment", "sky_color", &S::environment, &E::skyColor,
+                        {0.25, 0.42, 0.8}, 0, 1e3,
+                        "Linear RGB radiance of the built-in sky overhead"),
+        vectorParameter("environment", "horizon_color", &S::environment, &E::horizonColor,
+                        {0.75, 0.8, 0.85}, 0, 1e3,
+                        "Linear RGB radiance of the built-in sky at the horizon"),
+        vectorParameter("environment", "ground_color", &S::environment, &E::groundColor,
+                        {0.18, 0.16, 0.14}, 0, 1e3,
+                        "Linear RGB radiance of the built-in sky below the horizon"),
+    };
+}
+
 }  // namespace
 
 std::vector<Parameter> sceneryParameters() {
     std::vector<Parameter> table;
     for (std::size_t i = 0; i < std::size_t(kExtraLights); ++i)
         appendLight(table, i);
-    for (auto section : {materialParameters, groundParameters}) {
+    for (auto section : {materialParameters, groundParameters, environmentParameters}) {
         std::vector<Parameter> entries = section();
         table.insert(table.end(), std::make_move_iterator(entries.begin()),
                      std::make_move_iterator(entries.end()));

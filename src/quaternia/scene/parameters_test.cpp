@@ -63,7 +63,7 @@ ParameterValue alternativeValue(const Parameter& p) {
 
 TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
     const auto& table = parameterTable();
-    EXPECT_EQ(table.size(), 181u);  // every field of Scene (scene.h) but the animation keys
+    EXPECT_EQ(table.size(), 196u);  // every field of Scene (scene.h) but the animation keys
     std::set<std::string> names;
     for (const auto& p : table) {
         EXPECT_TRUE(names.insert(p.name()).second) << p.name() << " is declared twice";
@@ -71,10 +71,10 @@ TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
         EXPECT_FALSE(p.help.empty()) << p.name();
     }
     EXPECT_EQ(parameterSections(),
-              (std::vector<std::string>{"fractal", "slice", "camera", "render", "shading", "light1",
-                                        "light2", "light3", "light4", "light5", "light6", "light7",
-                                        "material", "ground", "plane", "mesh", "orbit", "cycles",
-                                        "animation"}));
+              (std::vector<std::string>{"fractal", "slice",  "camera",   "render", "shading",
+                                        "light1",  "light2", "light3",   "light4", "light5",
+                                        "light6",  "light7", "material", "ground", "environment",
+                                        "plane",   "mesh",   "orbit",    "cycles", "animation"}));
     EXPECT_EQ(table.front().name(), "fractal.formula");
     EXPECT_EQ(table.back().name(), "animation.c_radius");
     EXPECT_EQ(findParameter("render"), nullptr);

@@ -37,7 +37,7 @@ TEST(Presets, EachIsNamedOnceDescribedAndValidThroughTheTable) {
     for (const Preset& preset : scenePresets())
         order.push_back(preset.name);
     EXPECT_EQ(order, (std::vector<std::string>{"rabbit", "dendrite", "basilica", "4d-blob", "cubic",
-                                               "two-sided", "studio", "chrome", "glass",
+                                               "two-sided", "studio", "chrome", "glass", "sunset",
                                                "hidden-turn", "orbit"}));
 }
 

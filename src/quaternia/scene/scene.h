@@ -146,6 +146,31 @@ struct GroundSettings {
     bool shadowCatcher = false;  // drawn only where shadowed, as alpha over the background
 };
 
+// [environment]: the world around the scene, as light (issue 39). A latitude-longitude HDR
+// map (OpenEXR or Radiance .hdr, 2:1) or, without one, a built-in: a sky (a gradient from the
+// ground's colour through the horizon to the sky's, and a sun of an angular size that also
+// shines as a directional light with soft shadows) or a studio (soft boxes over a dark floor).
+// Every ray that leaves the scene sees it (reflections, refractions, the background where
+// `background` is on); `lighting` lights the set and the ground with it, occluded by the set
+// along `samples` shadow rays per hit.
+enum class EnvironmentBuiltin { Sky, Studio };
+
+struct EnvironmentSettings {
+    bool enabled = false;
+    std::string map;  // a file; empty: the built-in
+    EnvironmentBuiltin builtin = EnvironmentBuiltin::Sky;
+    double intensity = 1;     // times the map's (or the built-in's) radiance
+    double rotation = 0;      // degrees about camera.up's axis
+    bool background = true;   // camera rays that miss see it (else the gradient)
+    bool lighting = true;     // diffuse light from it on the set and the ground
+    int samples = 0;          // shadow rays per hit (0: unoccluded)
+    Vector3d sunDirection;    // towards the built-in sky's sun
+    double sunIntensity = 0;  // the sun's irradiance (0: no sun)
+    double sunSize = 0;       // its angular radius, degrees
+    Color sunColor, skyColor, horizonColor, groundColor;
+    bool operator==(const EnvironmentSettings&) const = default;
+};
+
 // `quaternia plane`: 2D images (plane_render.h). The filled Julia set K_c with smooth escape
 // colouring, the Julia set J_c drawn by its distance estimate, the Mandelbrot set of z^d + c,
 // basins of attraction, or a plane through H (origin + x u + y v). Image size, anti-aliasing
@@ -216,6 +241,7 @@ struct Scene {
     std::array<LightSettings, kExtraLights> lights;
     MaterialSettings material;
     GroundSettings ground;
+    EnvironmentSettings environment;
     PlaneSettings plane;
     MeshSettings mesh;
     OrbitSettings orbit;
