@@ -16,6 +16,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 small=(--width 160 --height 90)
+map=$(realpath "$(dirname "$0")/../data/environments/studio.hdr")  # the shipped environment map
 # name|command|output file (relative to the run's folder; "-" for standard output)
 jobs=(
   "default|render ${small[*]} -o out.png|out.png"
@@ -28,6 +29,8 @@ jobs=(
   "studio|render ${small[*]} --preset studio -o out.png|out.png"
   "chrome|render ${small[*]} --preset chrome -o out.png|out.png"
   "glass|render ${small[*]} --preset glass -o out.png|out.png"
+  "sunset|render ${small[*]} --preset sunset -o out.png|out.png"
+  "environment-map|render ${small[*]} --set environment.enabled=true --set environment.map='\"$map\"' --set material.reflectivity=0.4 --set material.roughness=0.1 --set ground.enabled=true -o out.png|out.png"
   "rabbit|render ${small[*]} --preset rabbit -o out.png|out.png"
   "cubic|render ${small[*]} --preset cubic -o out.png|out.png"
   "two-sided|render ${small[*]} --preset two-sided -o out.png|out.png"

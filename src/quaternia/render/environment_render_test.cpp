@@ -14,6 +14,8 @@
 #include "quaternia/render/camera.h"
 #include "quaternia/render/environment.h"
 #include "quaternia/render/render.h"
+#include "quaternia/scene/parameters.h"
+#include "quaternia/scene/presets.h"
 #include "quaternia/scene/test_scenes.h"
 #include "quaternia/util/atomic_file.h"
 
@@ -181,6 +183,27 @@ TEST(EnvironmentLight, GroundUnderTheBallIsDarkerByOcclusion) {
             }
         }
     }
+}
+
+// The environment's shadow rays are seeded by where each hit is: a window of the image (a
+// poster's, quaternia-mpi) has the whole image's pixels there, and so do other thread counts.
+TEST(EnvironmentLight, WindowAndThreadsLeaveThePixelsAlone) {
+    Scene scene = defaultScene();
+    applyPreset(scene, "sunset");
+    scene.render.width = 150;
+    scene.render.height = 100;
+    scene.material.reflectivity = 0.3;
+    scene.material.roughness = 0.2;
+    const RenderResult whole = render(scene);
+    RenderOptions options;
+    options.window = Tile{64, 64, 150, 100};
+    options.threads = 1;
+    const RenderResult part = render(scene, options);
+    for (int y = 64; y < 100; ++y)
+        for (int x = 64; x < 150; ++x) {
+            const Rgba a = part.image.at(x - 64, y - 64), b = whole.image.at(x, y);
+            ASSERT_TRUE(a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a) << x << "," << y;
+        }
 }
 
 }  // namespace
