@@ -120,6 +120,17 @@ void LaneTileRenderer::shadeHits(LaneTileStats& stats) {
 }
 
 void LaneTileRenderer::lightByEnvironment(LaneTileStats& stats) {
+    if (shader_->environment()->samples() == 0) {
+        // Unshadowed: the irradiance at each normal, read together.
+        environmentLight_.resize(hits_.size());
+        shader_->environment()->diffuseBatch(normals_, environmentLight_);
+        for (size_t h = 0; h < hits_.size(); ++h) {
+            surfaces_.red[h] += float(surfaces_.albedoR[h] * environmentLight_[h].x);
+            surfaces_.green[h] += float(surfaces_.albedoG[h] * environmentLight_[h].y);
+            surfaces_.blue[h] += float(surfaces_.albedoB[h] * environmentLight_[h].z);
+        }
+        return;
+    }
     environmentPoints_.resize(hits_.size());
     for (size_t h = 0; h < hits_.size(); ++h) {
         const Point3d& x = hits_[h].outside;

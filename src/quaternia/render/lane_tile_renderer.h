@@ -125,6 +125,7 @@ class LaneTileRenderer : private SampleTracer, private WaveEngine {
     void lightByEnvironment(LaneTileStats& stats);
     EnvironmentShadows environmentShadows_;
     std::vector<EnvironmentPoint> environmentPoints_;
+    std::vector<Color> environmentLight_;
     std::vector<PointEstimate> exitEstimates_;  // outwardNormals'
 
     // The rays of traced_ that ended on the set, into hits_ and hitPoints_.
