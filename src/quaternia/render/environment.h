@@ -113,6 +113,9 @@ class Environment {
     static constexpr int kLookUpChunk = 64;
     void lookUp(const Level& level, int n, const float* e, const float* c, const float* h,
                 const float* sun, float* rgb) const;
+    // lookUp of any number of unit directions, chunk by chunk (withSun: the disc added).
+    void lookUpDirections(const Level& level, bool withSun, std::span<const Vector3d> directions,
+                          std::span<Color> out) const;
     // The map's (u, v) in [0, 1]^2 of a unit world direction, and back.
     void toMap(const Vector3d& d, double& u, double& v) const;
     Vector3d fromMap(double u, double v) const;

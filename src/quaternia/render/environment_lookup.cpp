@@ -106,10 +106,10 @@ void Environment::radianceRow(const Vector3d& first, const Vector3d& step, int x
     }
 }
 
-void Environment::radianceBatch(std::span<const Vector3d> directions,
-                                std::span<const double> spreads, std::span<Color> out) const {
+void Environment::lookUpDirections(const Level& level, bool withSun,
+                                   std::span<const Vector3d> directions,
+                                   std::span<Color> out) const {
     const Vector3d sunAxis = sun_ ? sunDirection_ : Vector3d();
-    const double texelAngle = 2 * M_PI / levels_.front().width;
     float e[kLookUpChunk] = {}, c[kLookUpChunk] = {}, h[kLookUpChunk] = {}, s[kLookUpChunk] = {};
     float rgb[3 * kLookUpChunk];
     const int count = int(directions.size());
@@ -120,30 +120,23 @@ void Environment::radianceBatch(std::span<const Vector3d> directions,
             e[i] = float(dot(d, east_)), c[i] = float(dot(d, centre_)), h[i] = float(dot(d, up_));
             s[i] = float(dot(d, sunAxis));
         }
-        lookUp(levels_.front(), n, e, c, h, s, rgb);
-        for (int i = 0; i < n; ++i) {
-            const size_t j = size_t(start + i);
-            // Blurred rays read between two levels (radiance()).
-            out[j] = spreads[j] > texelAngle ? radiance(directions[j], spreads[j])
-                                             : Color(rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]);
-        }
-    }
-}
-
-void Environment::diffuseBatch(std::span<const Vector3d> normals, std::span<Color> out) const {
-    float e[kLookUpChunk] = {}, c[kLookUpChunk] = {}, h[kLookUpChunk] = {};
-    float rgb[3 * kLookUpChunk];
-    const int count = int(normals.size());
-    for (int start = 0; start < count; start += kLookUpChunk) {
-        const int n = std::min(kLookUpChunk, count - start);
-        for (int i = 0; i < n; ++i) {
-            const Vector3d& d = normals[size_t(start + i)];
-            e[i] = float(dot(d, east_)), c[i] = float(dot(d, centre_)), h[i] = float(dot(d, up_));
-        }
-        lookUp(irradiance_, n, e, c, h, nullptr, rgb);
+        lookUp(level, n, e, c, h, withSun ? s : nullptr, rgb);
         for (int i = 0; i < n; ++i)
             out[size_t(start + i)] = Color(rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]);
     }
+}
+
+void Environment::radianceBatch(std::span<const Vector3d> directions,
+                                std::span<const double> spreads, std::span<Color> out) const {
+    lookUpDirections(levels_.front(), true, directions, out);
+    // Blurred rays read between two levels (radiance()).
+    const double texelAngle = 2 * M_PI / levels_.front().width;
+    for (size_t j = 0; j < directions.size(); ++j)
+        if (spreads[j] > texelAngle) out[j] = radiance(directions[j], spreads[j]);
+}
+
+void Environment::diffuseBatch(std::span<const Vector3d> normals, std::span<Color> out) const {
+    lookUpDirections(irradiance_, false, normals, out);
 }
 
 }  // namespace quaternia
