@@ -29,9 +29,11 @@ ALGEBRAS = ["quaternion", "bicomplex", "coquaternion", "biquaternion", "octonion
 DIMENSION = {"quaternion": 4, "bicomplex": 4, "coquaternion": 4, "biquaternion": 8, "octonion": 8}
 FUNCTIONS = ["exp", "log", "sin", "cos", "tan", "sinh", "cosh", "tanh", "asin", "acos", "atan",
              "asinh", "acosh", "atanh", "reciprocal"]
+STUDIO_MAP = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data",
+                          "environments", "studio.hdr")
 PLANE_KINDS = ["julia", "julia-boundary", "mandelbrot", "basins", "slice"]
 PRESETS = ["rabbit", "dendrite", "basilica", "4d-blob", "cubic", "two-sided", "studio", "chrome",
-           "glass", "hidden-turn", "orbit"]
+           "glass", "sunset", "hidden-turn", "orbit"]
 
 
 def real(rng, scale=1.0, digits=3):
@@ -136,6 +138,14 @@ def render_options(rng):
         sets.append(f"shading.shadows={rng.choice(['hard', 'none'])}")
     if rng.random() < 0.2:
         sets.append(f"shading.fog_density={rng.choice([0.05, 0.3])}")
+    if rng.random() < 0.25:  # the environment (issue 39), in both engines
+        sets.append("environment.enabled=true")
+        sets.append(f"environment.builtin={rng.choice(['sky', 'studio'])}")
+        sets.append(f"environment.samples={rng.choice([0, 1, 4])}")
+        sets.append(f"environment.rotation={real(rng, 180, 1)}")
+        sets.append(f"environment.background={rng.choice(['true', 'false'])}")
+        if rng.random() < 0.3:
+            sets.append(f"environment.map=\"{rng.choice([STUDIO_MAP, '/no/such/map.hdr'])}\"")
     if engine == "scalar":  # the materials, the ground and the glow need the lanes
         return sets
     if rng.random() < 0.2:
