@@ -170,6 +170,19 @@ void PathWaves::spawn(const PathRay& parent, const Ray& ray, const Color& weight
         addBackground(parent.sample, weight, ray, spread);
         return;
     }
+    // A ray outside the set that meets neither the ground nor the bounding sphere sees the
+    // background, as the next wave would find (traceOutsideWave): added now, without a path (a
+    // reflecting floor sends millions of them up and away).
+    if (!inside) {
+        const double ground = ground_.shadowCatcher ? kInfinity : groundDistance(ray);
+        if (ground == kInfinity) {
+            const auto interval = intersectSphere(ray, boundingRadius_);
+            if (!interval || !(std::max(interval->tNear, 0.0) <= interval->tFar)) {
+                addBackground(parent.sample, weight, ray, spread);
+                return;
+            }
+        }
+    }
     // Made in place: a PathRay is 120 bytes, and a wave spawns millions.
     PathRay& child = (inside ? nextInside_ : nextOutside_).emplace_back();
     child.ray = ray;
