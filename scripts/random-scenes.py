@@ -146,8 +146,7 @@ def render_options(rng):
         sets.append(f"environment.background={rng.choice(['true', 'false'])}")
         if rng.random() < 0.3:
             sets.append(f"environment.map=\"{rng.choice([STUDIO_MAP, '/no/such/map.hdr'])}\"")
-    if engine == "scalar":  # the materials, the ground and the glow need the lanes
-        return sets
+    # The materials, the ground and the glow: both engines draw them (issue 35).
     if rng.random() < 0.2:
         sets.append(f"shading.glow_intensity={rng.choice([0.5, 2])}")
     if rng.random() < 0.25:
