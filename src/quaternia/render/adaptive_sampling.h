@@ -41,6 +41,9 @@ struct PixelSamples {
     double uncovered = 0;
     int groundHits = 0;
     int layerHits = 0;
+    // Whether the finished pixel shows some of the background: a sample missed, or a hit let
+    // some through.
+    bool showsBackground() const { return hits != samples || uncovered != 0; }
 };
 
 // The sample indices [first, end) that uniform sampling takes in each pixel: all n, or sample

@@ -153,8 +153,9 @@ void PathWaves::addBackground(int sample, const Color& weight, const Ray& ray, d
 }
 
 void PathWaves::addEscapes() {
+    if (escapes_.empty()) return;  // none without an environment (addBackground)
     escapeRadiance_.resize(escapes_.size());
-    shader_->backgrounds(escapeDirections_, escapeSpreads_, escapeRadiance_);
+    shader_->environment()->radianceBatch(escapeDirections_, escapeSpreads_, escapeRadiance_);
     for (size_t i = 0; i < escapes_.size(); ++i)
         sampleResults_[size_t(escapes_[i].sample)].color += escapes_[i].weight * escapeRadiance_[i];
     escapes_.clear();

@@ -176,7 +176,7 @@ class PathWaves {
     void seeBackground(const PathRay& path);
     // weight times the background along `ray` added to sample `sample`: at once, or, where the
     // environment is seen, at the end of the batch with the others (addEscapes: the map read
-    // for many rays together, Shader::backgrounds).
+    // for many rays together, Environment::radianceBatch).
     void addBackground(int sample, const Color& weight, const Ray& ray, double spread);
     void addEscapes();
     // Queues a child ray of `parent` (or, past the depth or below the weight worth a ray, adds

@@ -257,7 +257,7 @@ Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
     const double covered = hits - pixel.uncovered;
     double coverage = covered / samples;
     Color color;
-    if (hits == samples && pixel.uncovered == 0) {
+    if (!pixel.showsBackground()) {
         color = pixel.sum / double(samples);
     } else if (opaque_) {
         color = pixel.sum / double(samples) + background * (1 - coverage);
@@ -418,17 +418,14 @@ void FrameRenderer::finishRowsOnBackgroundRows(const Tile& tile, ThreadTotals& t
             shader_.backgroundRow(directions.first, directions.step, tile.x0, width, alpha, row);
         } else {
             // A map costs more than a gradient: only the runs of pixels that show some of it
-            // (a sample that missed; finishPixel reads it nowhere else).
-            auto showsBackground = [](const PixelSamples& p) {
-                return p.hits != p.samples || p.uncovered != 0;
-            };
+            // (finishPixel reads it nowhere else).
             for (int i = 0; i < width;) {
-                if (!showsBackground(pixel[i])) {
+                if (!pixel[i].showsBackground()) {
                     ++i;
                     continue;
                 }
                 int end = i + 1;
-                while (end < width && showsBackground(pixel[end]))
+                while (end < width && pixel[end].showsBackground())
                     ++end;
                 shader_.backgroundRow(directions.first, directions.step, tile.x0 + i, end - i,
                                       alpha, row + i);

@@ -322,8 +322,8 @@ Color Shader::shade(const Hit& hit, const Ray& ray, double footprint, ShadingSta
 Color Shader::environmentLight(const Point3d& point, const Point3d& origin, const Vector3d& n,
                                const Color& albedo, ShadingStats& stats) const {
     const int count = environment_->samples();
-    std::array<EnvironmentDirection, 64> directions;
-    std::array<double, 64> visibility;
+    std::array<EnvironmentDirection, kMaxEnvironmentSamples> directions;
+    std::array<double, kMaxEnvironmentSamples> visibility;
     const std::span<EnvironmentDirection> rays(directions.data(), size_t(count));
     environment_->shadowDirections(Environment::seedOf(point), n, rays);
     for (int k = 0; k < count; ++k) {
@@ -370,16 +370,6 @@ LightConstants Shader::lightConstants() const {
     k.ambient = float(settings_.ambient);
     k.highlightCutoff = float(highlightCutoff_);
     return k;
-}
-
-void Shader::backgrounds(std::span<const Vector3d> directions, std::span<const double> spreads,
-                         std::span<Color> out) const {
-    if (environmentSeen()) {
-        environment_->radianceBatch(directions, spreads, out);
-        return;
-    }
-    for (size_t i = 0; i < directions.size(); ++i)
-        out[i] = background(Ray{Point3d(), directions[i]}, spreads[i]);
 }
 
 bool Shader::environmentBackground() const {

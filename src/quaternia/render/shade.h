@@ -82,11 +82,8 @@ class Shader {
     // fog (backgroundTop() and backgroundBottom() are then the fog's).
     Color background(const Ray& ray, double spread = 0) const;
     // Whether rays that leave the scene see the environment (there is one, and no fog); then
-    // Shader::backgrounds reads many at once.
+    // Environment::radianceBatch reads many at once.
     bool environmentSeen() const { return environment_ && !(settings_.fogDensity > 0); }
-    // background() of many unit directions and spreads (environmentSeen(): vectorised).
-    void backgrounds(std::span<const Vector3d> directions, std::span<const double> spreads,
-                     std::span<Color> out) const;
     // What a camera ray that misses sees, where backgroundRow gives it: the gradient, or the
     // environment where it is shown (environment.background).
     bool environmentBackground() const;

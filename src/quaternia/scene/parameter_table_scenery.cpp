@@ -135,7 +135,8 @@ std::vector<Parameter> environmentParameters() {
                          "gradient; reflections still see the environment)"),
         booleanParameter("environment", "lighting", &S::environment, &E::lighting, true,
                          "Light the set and the ground with the environment's diffuse light"),
-        integerParameter("environment", "samples", &S::environment, &E::samples, 4, 0, 64,
+        integerParameter("environment", "samples", &S::environment, &E::samples, 4, 0,
+                         kMaxEnvironmentSamples,
                          "Shadow rays per hit towards the environment (importance-sampled): the "
                          "set's occlusion of its light; 0 lights without occlusion"),
         vectorParameter("environment", "sun_direction", &S::environment, &E::sunDirection,

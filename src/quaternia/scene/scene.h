@@ -154,6 +154,8 @@ struct GroundSettings {
 // `background` is on); `lighting` lights the set and the ground with it, occluded by the set
 // along `samples` shadow rays per hit.
 enum class EnvironmentBuiltin { Sky, Studio };
+// environment.samples' largest value: the shadow rays of one point fit on the stack.
+inline constexpr int kMaxEnvironmentSamples = 64;
 
 struct EnvironmentSettings {
     bool enabled = false;
