@@ -22,6 +22,8 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/algebra/hypercomplex.cpp
   quaternia/algebra/constant_text.cpp
   quaternia/algebra/hypercomplex_formula.cpp
+  quaternia/interval/interval_element.cpp
+  quaternia/interval/segment_form.cpp
   quaternia/fractal/distance.cpp
   quaternia/fractal/fractal.cpp
   quaternia/fractal/algebra_rules.cpp

@@ -1,0 +1,237 @@
+#include "quaternia/interval/segment_form.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+
+namespace quaternia {
+namespace {
+
+using Op = Instruction::Op;
+using Radius = std::array<double, kMaxAlgebraDimension>;
+
+// gamma_n = n u / (1 - n u) for the at most 2 d^2 + 1 = 129 terms of a product's component (and
+// the 3d terms of a norm), rounded up generously.
+constexpr double kGamma = 0x1p-45;
+// Unit roundoff, twice: the error bound of one sum or product.
+constexpr double kUlp = 0x1p-52;
+
+// Every radius computed in round-to-nearest, raised past its own rounding (header comment).
+void inflate(Radius& r, int d) {
+    for (std::size_t k = 0; k < std::size_t(d); ++k)
+        r[k] = r[k] * (1 + 0x1p-40) + 0x1p-1000;
+}
+
+// One pass over the table for the seven sums of a product (header comment), unrolled for the
+// algebra's dimension.
+template <int D>
+SegmentForm multiplyFixed(const MultiplicationTable& table, const SegmentForm& x,
+                          const SegmentForm& y) {
+    std::array<double, D> xm, ym, yAll;
+    for (std::size_t k = 0; k < D; ++k) {
+        xm[k] = std::fabs(x.centre[k]) + std::fabs(x.slope[k]);
+        ym[k] = std::fabs(y.centre[k]) + std::fabs(y.slope[k]);
+        yAll[k] = ym[k] + y.radius[k];
+    }
+    std::array<double, D> cc{}, ss{}, cs{}, sc{}, rounding{}, left{}, right{};
+    for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) {
+            const BasisProduct p = table.product(i, j);
+            const std::size_t k = std::size_t(p.index), a = std::size_t(i), b = std::size_t(j);
+            const double sign = p.sign;
+            cc[k] += sign * (x.centre[a] * y.centre[b]);
+            ss[k] += sign * (x.slope[a] * y.slope[b]);
+            cs[k] += sign * (x.centre[a] * y.slope[b]);
+            sc[k] += sign * (x.slope[a] * y.centre[b]);
+            rounding[k] += xm[a] * ym[b];
+            left[k] += xm[a] * y.radius[b];
+            right[k] += x.radius[a] * yAll[b];
+        }
+    SegmentForm r;
+    for (std::size_t k = 0; k < D; ++k) {
+        r.centre[k] = cc[k] + 0.5 * ss[k];
+        r.slope[k] = cs[k] + sc[k];
+        r.radius[k] = 0.5 * std::fabs(ss[k]) + left[k] + right[k] + 3 * kGamma * rounding[k];
+    }
+    inflate(r.radius, D);
+    return r;
+}
+
+SegmentForm multiply(const MultiplicationTable& table, const SegmentForm& x, const SegmentForm& y) {
+    return table.dimension() == 4 ? multiplyFixed<4>(table, x, y)
+                                  : multiplyFixed<kMaxAlgebraDimension>(table, x, y);
+}
+
+SegmentForm combined(const SegmentForm& x, const SegmentForm& y, double sign, int d) {
+    SegmentForm r;
+    for (std::size_t k = 0; k < std::size_t(d); ++k) {
+        r.centre[k] = x.centre[k] + sign * y.centre[k];
+        r.slope[k] = x.slope[k] + sign * y.slope[k];
+        r.radius[k] = x.radius[k] + y.radius[k] +
+                      kUlp * (std::fabs(x.centre[k]) + std::fabs(y.centre[k]) +
+                              std::fabs(x.slope[k]) + std::fabs(y.slope[k]));
+    }
+    inflate(r.radius, d);
+    return r;
+}
+
+SegmentForm scaled(double s, const SegmentForm& x, int d) {
+    SegmentForm r;
+    for (std::size_t k = 0; k < std::size_t(d); ++k) {
+        r.centre[k] = s * x.centre[k];
+        r.slope[k] = s * x.slope[k];
+        r.radius[k] =
+            std::fabs(s) * (x.radius[k] + kUlp * (std::fabs(x.centre[k]) + std::fabs(x.slope[k])));
+    }
+    inflate(r.radius, d);
+    return r;
+}
+
+// Components 0 .. 3 mapped by the 4x4 matrix m, row by row (Instruction::Op::kLinear).
+SegmentForm linearMap(const double* m, const SegmentForm& x) {
+    SegmentForm r;
+    for (std::size_t row = 0; row < 4; ++row)
+        for (std::size_t col = 0; col < 4; ++col) {
+            const double a = m[row * 4 + col];
+            r.centre[row] += a * x.centre[col];
+            r.slope[row] += a * x.slope[col];
+            r.radius[row] +=
+                std::fabs(a) *
+                (x.radius[col] + kGamma * (std::fabs(x.centre[col]) + std::fabs(x.slope[col])));
+        }
+    inflate(r.radius, 4);
+    return r;
+}
+
+SegmentForm power(const MultiplicationTable& table, const SegmentForm& x, int n) {
+    if (n == 0) {
+        SegmentForm one;
+        one.centre = realElement(1);
+        return one;
+    }
+    // Power-associative algebras (interval_element.cpp, power): squares by repeated squaring.
+    SegmentForm result, base = x;
+    bool first = true;
+    for (int e = n;; e >>= 1) {
+        if (e & 1) {
+            result = first ? base : multiply(table, result, base);
+            first = false;
+        }
+        if (e == 1) return result;
+        base = multiply(table, base, base);
+    }
+}
+
+}  // namespace
+
+SegmentForm segmentBetween(const Hypercomplex& from, const Hypercomplex& to, double thickness,
+                           int dimension) {
+    SegmentForm form;
+    for (std::size_t k = 0; k < std::size_t(dimension); ++k) {
+        form.centre[k] = 0.5 * (from[k] + to[k]);
+        form.slope[k] = 0.5 * (to[k] - from[k]);
+        form.radius[k] = thickness + kUlp * (std::fabs(from[k]) + std::fabs(to[k]));
+    }
+    inflate(form.radius, dimension);
+    return form;
+}
+
+bool formContains(const SegmentForm& form, double e, const Hypercomplex& point, int dimension) {
+    for (std::size_t k = 0; k < std::size_t(dimension); ++k)
+        if (!(std::fabs(point[k] - (form.centre[k] + form.slope[k] * e)) <= form.radius[k]))
+            return false;
+    return true;
+}
+
+double lowerNorm(const SegmentForm& form, int dimension) {
+    // |c + s e|^2 is a convex quadratic in e: its least value on [-1, 1] is at -c.s / |s|^2,
+    // clamped. Evaluated there, it exceeds the least value by |s|^2 (e - e0)^2 for a rounded e
+    // (negligible next to the margin below), and by its own rounding.
+    double ss = 0, cs = 0;
+    for (std::size_t k = 0; k < std::size_t(dimension); ++k) {
+        ss += form.slope[k] * form.slope[k];
+        cs += form.centre[k] * form.slope[k];
+    }
+    const double e = ss > 0 ? std::clamp(-cs / ss, -1.0, 1.0) : 0.0;
+    double squared = 0, scale = 0, remainder = 0;
+    for (std::size_t k = 0; k < std::size_t(dimension); ++k) {
+        const double v = form.centre[k] + form.slope[k] * e;
+        squared += v * v;
+        const double m = std::fabs(form.centre[k]) + std::fabs(form.slope[k]);
+        scale += m * m;
+        remainder += form.radius[k] * form.radius[k];
+    }
+    const double lowerSquared = squared - kGamma * scale - 0x1p-1000;
+    if (!(lowerSquared > 0)) return 0;
+    return std::sqrt(lowerSquared) * (1 - 0x1p-50) - std::sqrt(remainder) * (1 + 0x1p-50);
+}
+
+SegmentForm evaluateOnSegment(const FormulaProgram& program, const MultiplicationTable& table,
+                              const SegmentForm& form, std::vector<SegmentForm>& registers) {
+    const std::vector<Instruction>& code = program.instructions();
+    if (registers.size() < code.size()) registers.resize(code.size());
+    const int d = table.dimension();
+    const std::vector<Hypercomplex>& constants = program.elements();
+    const double* factors = program.factors().data();
+    for (std::size_t n = 0; n < code.size(); ++n) {
+        const Instruction& i = code[n];
+        const std::size_t a = std::size_t(i.a), b = std::size_t(i.b);
+        SegmentForm& out = registers[n];
+        switch (i.op) {
+            case Op::kZ:
+                out = form;
+                break;
+            case Op::kConstant:
+                out = SegmentForm{constants[std::size_t(i.index)], {}, {}};
+                break;
+            case Op::kAdd:
+                out = combined(registers[a], registers[b], 1, d);
+                break;
+            case Op::kSubtract:
+                out = combined(registers[a], registers[b], -1, d);
+                break;
+            case Op::kNegate:
+                out = scaled(-1, registers[a], d);
+                break;
+            case Op::kMultiply:
+                out = multiply(table, registers[a], registers[b]);
+                break;
+            case Op::kSquare:
+                out = multiply(table, registers[a], registers[a]);
+                break;
+            case Op::kScale:
+                out = scaled(factors[i.index], registers[a], d);
+                break;
+            case Op::kLinear:
+                out = linearMap(factors + i.index, registers[a]);
+                break;
+            case Op::kPower:
+                out = power(table, registers[a], i.index);
+                break;
+            case Op::kFunction:
+            case Op::kRealPower:
+                throw std::logic_error("evaluateOnSegment: no interval extension");
+        }
+    }
+    return registers[std::size_t(program.result())];
+}
+
+bool segmentLeavesBall(const FormulaProgram& program, const MultiplicationTable& table,
+                       const SegmentForm& form, int maxIterations, double bailout,
+                       std::vector<SegmentForm>& registers) {
+    const int d = table.dimension();
+    SegmentForm z = form;
+    for (int n = 0;; ++n) {
+        const double lower = lowerNorm(z, d);
+        if (lower > bailout) return true;
+        if (n + 1 >= maxIterations || !(lower == lower)) return false;
+        // A form wider than the ball's diameter along some axis is rarely proven later, and
+        // iterates only widen: give up (false proves nothing), sparing the iterations left.
+        for (std::size_t k = 0; k < std::size_t(d); ++k)
+            if (!(std::fabs(z.slope[k]) + z.radius[k] <= 2 * bailout)) return false;
+        z = evaluateOnSegment(program, table, z, registers);
+    }
+}
+
+}  // namespace quaternia
