@@ -64,6 +64,14 @@ DistanceEstimate Fractal::estimate(const Point3d& p) const {
     return e;
 }
 
+bool Fractal::excludesSegment(const Ray& ray, double t0, double t1) const {
+    const Hypercomplex a = slice_.fromWorld(ray.at(t0)), b = slice_.fromWorld(ray.at(t1));
+    double largest = 0;
+    for (size_t i = 0; i < a.size(); ++i)
+        largest = std::max({largest, std::fabs(a[i]), std::fabs(b[i])});
+    return set_->excludesSegment(a, b, 1e-12 * (1 + largest));
+}
+
 Vector3d Fractal::normal(const Point3d& p) const {
     auto g = set_->potentialGradient(slice_.fromWorld(p), slice_.tangents());
     return normalOrOutward(Vector3d(g[0], g[1], g[2]), p);

@@ -54,6 +54,13 @@ class Fractal {
     // that a 3D step of that length cannot cross the set.
     DistanceEstimate estimate(const Point3d& p) const;
     bool contains(const Point3d& p) const { return set_->contains(slice_.fromWorld(p)); }
+    // Whether excludesSegment can prove anything (JuliaSet::provesEmptySpace).
+    bool provesEmptySegments() const { return set_->provesEmptySpace(); }
+    // True where no point ray.at(t), t0 <= t <= t1, belongs to K_N, proven (JuliaSet::
+    // excludesSegment): the slice is affine, so the segment's image is the segment between its
+    // ends' images, thickened by 1e-12 (1 + |q|) for the rounding of the slice's map (a few
+    // dozen operations, each of relative error 2^-53). False proves nothing.
+    bool excludesSegment(const Ray& ray, double t0, double t1) const;
     // Unit outward normal from the analytic Jacobian (one pass, docs/methods.md, Normals).
     Vector3d normal(const Point3d& p) const;
     // Unit normal from central differences of the potential ln|z_M|, step h: the simple

@@ -1,5 +1,8 @@
 #include "quaternia/fractal/hypercomplex_julia.h"
 
+#include "quaternia/interval/interval_element.h"
+#include "quaternia/interval/segment_form.h"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -59,7 +62,8 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
                                            double bailout)
     : formula_(std::move(formula)),
       rules_(&algebraRules(formula_.algebra())),
-      maxIterations_(maxIterations) {
+      maxIterations_(maxIterations),
+      intervalExtension_(!withoutIntervalExtension(formula_.program())) {
     const std::string algebra(algebraName(formula_.algebra()));
     const int d = formula_.degree();
     if (d < 2 && !formula_.transcendental()) {
@@ -160,6 +164,17 @@ DistanceEstimate HypercomplexJuliaSet::estimate(const Hypercomplex& z0) const {
             break;
     }
     return multiplicativeEstimate(z0);
+}
+
+bool HypercomplexJuliaSet::excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
+                                           double thickness) const {
+    if (!intervalExtension_) return false;
+    // Scratch registers per thread: the marchers ask for many segments from every thread.
+    thread_local std::vector<SegmentForm> registers;
+    const int d = formula_.dimension();
+    return segmentLeavesBall(formula_.program(), MultiplicationTable::of(formula_.algebra()),
+                             segmentBetween(from, to, thickness, d), maxIterations_, bailout_,
+                             registers);
 }
 
 bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {

@@ -55,6 +55,12 @@ class HypercomplexJuliaSet final : public JuliaSet {
     std::array<double, 3> potentialGradient(
         const Hypercomplex& z0, const std::array<Hypercomplex, 3>& tangents) const override;
 
+    // Every formula but the bicomplex functions: segments are iterated through the program and
+    // the multiplication table (interval/segment_form.h, segmentLeavesBall).
+    bool provesEmptySpace() const override { return intervalExtension_; }
+    bool excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
+                         double thickness) const override;
+
     const HypercomplexFormula& formula() const { return formula_; }
     int maxIterations() const override { return maxIterations_; }
     double bailout() const override { return bailout_; }
@@ -87,6 +93,7 @@ class HypercomplexJuliaSet final : public JuliaSet {
     double bailout_;
     double escapeRadius_;
     DistanceKind kind_;
+    bool intervalExtension_ = false;
     // bicomplex: the two complex polynomials of the duplex form (coefficients, lowest degree
     // first) and their escape radii
     std::array<std::vector<std::complex<double>>, 2> componentCoefficients_;

@@ -44,6 +44,18 @@ class JuliaSet {
     virtual std::array<double, 3> potentialGradient(
         const Hypercomplex& z0, const std::array<Hypercomplex, 3>& tangents) const = 0;
 
+    // Whether excludesSegment can prove anything: the formula has an interval extension
+    // (interval/interval_element.h). The sets marched by fixed steps then cross empty space by
+    // segments (render/march.h, firstSampleInside).
+    virtual bool provesEmptySpace() const { return false; }
+    // True where no point within `thickness` (in every component) of the segment from `from` to
+    // `to` (points of the algebra) belongs to K_N, proven by iterating the segment in affine
+    // arithmetic (interval/segment_form.h); false proves nothing.
+    virtual bool excludesSegment(const Hypercomplex& /*from*/, const Hypercomplex& /*to*/,
+                                 double /*thickness*/) const {
+        return false;
+    }
+
     virtual int maxIterations() const = 0;
     // Membership radius: K_N lies in the ball of this radius.
     virtual double bailout() const = 0;

@@ -81,42 +81,95 @@ MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSetti
     return result;
 }
 
-MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
-                           const RayInterval& interval) {
-    MarchResult result;
-    double tOutside = interval.tNear;
-    // Where the fractal's distance is a proven lower bound (DistanceKind::kLipschitz), a sample
-    // outside skips ahead by that distance when it exceeds the step: nothing lies within it.
+SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double tStart, double tEnd,
+                                 double step, int maxSteps) {
+    SampleCrossing crossing;
+    crossing.tOutside = tStart;
+    if (fractal.provesEmptySegments()) {
+        // Samples by index, so that a run crossed at once lands on the same grid.
+        const double samples = std::floor((tEnd - tStart) / step);
+        if (!(samples >= 0)) return crossing;
+        const int64_t last = int64_t(std::min(samples, 1e15));
+        auto at = [&](int64_t k) { return tStart + double(k) * step; };
+        int64_t span = kFirstSpan;
+        int proofs = 0;  // in a row at this span: the run doubles after two
+        // Near the surface runs of two fail again and again: after such a failure this many
+        // samples are tested one by one before a run is tried again (doubling while it fails).
+        int64_t oneByOne = 0, backOff = 1;
+        for (int64_t k = 0; k <= last && crossing.steps < maxSteps;) {
+            ++crossing.steps;
+            if (span > 1 && oneByOne == 0) {
+                const int64_t end = std::min(k + span - 1, last);
+                if (fractal.excludesSegment(ray, at(k), at(end))) {
+                    crossing.tOutside = at(end);
+                    k = end + 1;
+                    backOff = 1;
+                    if (++proofs == 2) {
+                        span = std::min(2 * span, kLongestSpan);
+                        proofs = 0;
+                    }
+                } else {
+                    proofs = 0;
+                    if (span == 2) {
+                        oneByOne = backOff;
+                        backOff = std::min<int64_t>(2 * backOff, kLongestOneByOne);
+                    }
+                    span /= 2;
+                }
+                continue;
+            }
+            if (fractal.contains(ray.at(at(k)))) {
+                crossing.tInside = at(k);
+                return crossing;
+            }
+            crossing.tOutside = at(k);
+            ++k;
+            if (oneByOne > 0) --oneByOne;
+            span = std::max<int64_t>(span, 2);
+        }
+        return crossing;
+    }
     const bool skip = fractal.distanceKind() == DistanceKind::kLipschitz;
-    for (double t = interval.tNear, advance = settings.step;
-         t <= interval.tFar && result.steps < settings.maxSteps; t += advance) {
-        ++result.steps;
+    for (double t = tStart, advance = step; t <= tEnd && crossing.steps < maxSteps; t += advance) {
+        ++crossing.steps;
         bool inside;
         if (skip) {
             const DistanceEstimate e = fractal.estimate(ray.at(t));
-            result.iterations += e.iterations;
+            crossing.iterations += e.iterations;
             inside = e.inside;
-            result.closest = std::min(result.closest, e.distance);
-            advance = std::max(settings.step, e.distance);
+            crossing.closest = std::min(crossing.closest, e.distance);
+            advance = std::max(step, e.distance);
         } else {
             inside = fractal.contains(ray.at(t));
         }
-        if (!inside) {
-            tOutside = t;
-            continue;
+        if (inside) {
+            crossing.tInside = t;
+            return crossing;
         }
-        // Bisect between the last outside and the first inside sample to a thousandth of the
-        // step, so that depth and normals do not show the sampling grid.
-        double tInside = t;
-        for (int k = 0; k < 10 && tInside > tOutside; ++k) {
-            double middle = 0.5 * (tOutside + tInside);
-            ++result.steps;
-            (fractal.contains(ray.at(middle)) ? tInside : tOutside) = middle;
-        }
-        Point3d outside = ray.at(tOutside);
-        result.hit = Hit{tInside, ray.at(tInside), outside, fractal.estimate(outside), tOutside};
-        return result;
+        crossing.tOutside = t;
     }
+    return crossing;
+}
+
+MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
+                           const RayInterval& interval) {
+    MarchResult result;
+    const SampleCrossing crossing = firstSampleInside(fractal, ray, interval.tNear, interval.tFar,
+                                                      settings.step, settings.maxSteps);
+    result.steps = crossing.steps;
+    result.iterations = crossing.iterations;
+    result.closest = crossing.closest;
+    if (!crossing.tInside) return result;
+    // Bisect between the last outside and the first inside sample to a thousandth of the
+    // step, so that depth and normals do not show the sampling grid.
+    double tOutside = crossing.tOutside, tInside = *crossing.tInside;
+    for (int k = 0; k < 10 && tInside > tOutside; ++k) {
+        double middle = 0.5 * (tOutside + tInside);
+        ++result.steps;
+        (fractal.contains(ray.at(middle)) ? tInside : tOutside) = middle;
+    }
+    Point3d outside = ray.at(tOutside);
+    result.hit = Hit{tInside, ray.at(tInside), outside, fractal.estimate(outside), tOutside};
     return result;
 }
 

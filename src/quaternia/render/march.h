@@ -85,6 +85,29 @@ struct MarchResult {
     double closest = 1;
 };
 
+// Algorithm 2's samples t_k = tStart + k step (k = 0, 1, ... while t_k <= tEnd) along a ray
+// through a set whose membership is all that is known (DistanceKind::kLipschitz), each tested
+// for membership, the first inside one found. Where the set proves empty boxes
+// (Fractal::provesEmptySegments: every formula but the bicomplex functions) runs of samples are
+// crossed at once where Fractal::excludesSegment proves the segment that holds them outside K_N,
+// the runs doubled after two proofs in a row (from kFirstSpan up to kLongestSpan samples) and
+// halved after each failure down to a single sample (and after a run of two fails, up to
+// kLongestOneByOne samples are tested one by one before runs are tried again): the samples
+// tested are the same, only those proven outside are skipped, so the first inside sample is the
+// one plain fixed steps would find (Marching.ProvenRunsFindThePlainStepsSample).
+// Elsewhere a sample skips ahead by the set's proven distance (its Lipschitz bound) where it is
+// longer than the step.
+struct SampleCrossing {
+    std::optional<double> tInside;  // the first sample in K_N
+    double tOutside = 0;            // the sample before it (tStart where it is the first)
+    int steps = 0;                  // membership tests and segments tested
+    int64_t iterations = 0;         // polynomial evaluations where counted (the distance bounds)
+    double closest = 1;             // the least distance bound met (where they are taken)
+};
+inline constexpr int64_t kFirstSpan = 64, kLongestSpan = 1024, kLongestOneByOne = 64;
+SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double tStart, double tEnd,
+                                 double step, int maxSteps);
+
 // The ray from where it enters the set's bounding sphere to where it leaves it.
 MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
 MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);

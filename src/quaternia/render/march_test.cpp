@@ -4,9 +4,13 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
+#include <vector>
 
 #include "quaternia/render/camera.h"
+#include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_file.h"
 #include "quaternia/scene/scene_fractal.h"
 #include "quaternia/scene/test_scenes.h"
 
@@ -130,6 +134,82 @@ TEST(SphereTrace, EstimateNeverOvershootsFirstMember) {
             ++compared;
         }
         EXPECT_GT(compared, 50) << id;
+    }
+}
+
+}  // namespace
+}  // namespace quaternia
+
+namespace quaternia {
+namespace {
+
+struct ProvenCase {
+    const char* name;
+    std::vector<const char*> overrides;
+};
+
+// Runs crossed by proof skip only samples outside K_N: along random rays through every
+// algebra's set (formulas with one- and two-sided constants, 8-component slices), the first
+// inside sample and the sample before it are those of plain fixed steps, which test every
+// sample; and the proofs spare most of the samples.
+TEST(Marching, ProvenRunsFindThePlainStepsSample) {
+    const std::vector<ProvenCase> cases = {
+        {"coquaternion", {"fractal.algebra=\"coquaternion\""}},
+        {"coquaternion two-sided",
+         {"fractal.algebra=\"coquaternion\"", "fractal.formula=\"i z^2 j + 0.3 z^3 + c\"",
+          "slice.angles=[0, 0, 0, 0, 90, 0]"}},
+        {"biquaternion",
+         {"fractal.algebra=\"biquaternion\"", "fractal.c=[-0.2, 0.6, 0.2, 0.2, 0, 0.1, 0, 0]",
+          "slice.axes=[[0,1,0,0,0,0,0,0],[0,0,0,0,0,1,0,0],[0,0,0,0,0,0,1,0]]"}},
+        {"octonion formula",
+         {"fractal.algebra=\"octonion\"", "fractal.formula=\"z^2 + 0.2 (i z) j + c\"",
+          "fractal.c=[-0.2, 0.6, 0.2, 0.2, 0.1, 0, 0.05, 0]"}},
+        {"bicomplex",
+         {"fractal.algebra=\"bicomplex\"", "fractal.c=[-0.5613, 0.3724, 0.3724, -0.4387]"}},
+    };
+    std::mt19937 rng(42);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (const ProvenCase& test : cases) {
+        Scene scene = defaultScene();
+        for (const char* assignment : test.overrides)
+            applyOverride(scene, assignment);
+        const Fractal fractal = fractalFromScene(scene);
+        ASSERT_TRUE(fractal.provesEmptySegments()) << test.name;
+        const double step = 0.004;
+        int64_t proven = 0, plain = 0, hits = 0;
+        for (int r = 0; r < 60; ++r) {
+            const Point3d origin(3 * u(rng), 3 * u(rng), -4);
+            const Ray ray{origin, normalize(Vector3d(0.3 * u(rng), 0.3 * u(rng), 0) - origin)};
+            const auto interval = intersectSphere(ray, fractal.boundingRadius());
+            if (!interval) continue;
+            const SampleCrossing crossing =
+                firstSampleInside(fractal, ray, interval->tNear, interval->tFar, step, 1 << 30);
+            // Every sample, one by one.
+            std::optional<double> tInside;
+            double tOutside = interval->tNear;
+            int64_t samples = 0;
+            for (int64_t k = 0; interval->tNear + double(k) * step <= interval->tFar; ++k) {
+                const double t = interval->tNear + double(k) * step;
+                ++samples;
+                if (fractal.contains(ray.at(t))) {
+                    tInside = t;
+                    break;
+                }
+                tOutside = t;
+            }
+            ASSERT_EQ(crossing.tInside.has_value(), tInside.has_value())
+                << test.name << " ray " << r;
+            if (tInside) {
+                ++hits;
+                EXPECT_EQ(*crossing.tInside, *tInside) << test.name << " ray " << r;
+                EXPECT_EQ(crossing.tOutside, tOutside) << test.name << " ray " << r;
+            }
+            proven += crossing.steps;
+            plain += samples;
+        }
+        EXPECT_GT(hits, 5) << test.name;
+        EXPECT_LT(proven * 4, plain)
+            << test.name << ": " << proven << " tests, " << plain << " samples";
     }
 }
 
