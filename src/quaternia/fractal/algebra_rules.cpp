@@ -9,12 +9,12 @@ namespace {
 // The rows as written; escape is filled in by algebraRules().
 // clang-format off
 constexpr std::array<AlgebraRules, 5> kRules = {{
-    // algebra               quaternion set  distance                  bailout  M at estimate  fold   duplex
-    {Algebra::kQuaternion,   true,           DistanceKind::kEstimate,  0,       true,          false, false},
-    {Algebra::kBicomplex,    false,          DistanceKind::kEstimate,  4,       false,         false, true},
-    {Algebra::kCoquaternion, false,          DistanceKind::kLipschitz, 2,       false,         false, false},
-    {Algebra::kBiquaternion, false,          DistanceKind::kLipschitz, 2,       false,         false, false},
-    {Algebra::kOctonion,     false,          DistanceKind::kEstimate,  0,       true,          true,  false},
+    // algebra               quaternion set  distance                  bailout  M at estimate  fold   duplex  H half
+    {Algebra::kQuaternion,   true,           DistanceKind::kEstimate,  0,       true,          false, false,  false},
+    {Algebra::kBicomplex,    false,          DistanceKind::kEstimate,  4,       false,         false, true,   false},
+    {Algebra::kCoquaternion, false,          DistanceKind::kLipschitz, 2,       false,         false, false,  false},
+    {Algebra::kBiquaternion, false,          DistanceKind::kLipschitz, 2,       false,         false, false,  true},
+    {Algebra::kOctonion,     false,          DistanceKind::kEstimate,  0,       true,          true,  false,  true},
 }};
 // clang-format on
 

@@ -2,7 +2,8 @@
 // computes it, what bounds a step (an escape-time estimate, or a proven Lipschitz distance with
 // Algorithm 2's fixed steps), where orbits escape, the bailout taken when the scene leaves it at
 // 0, which iterate the normal differentiates, and which fast paths apply (octonion real forms
-// folded onto the quaternions, bicomplex polynomials as two complex iterations in the lanes).
+// folded onto the quaternions, bicomplex polynomials as two complex iterations in the lanes,
+// the quaternion half of the 8-component algebras drawn as the quaternions).
 // Every choice that depends on the algebra reads this table instead of branching on the algebra.
 #pragma once
 
@@ -39,6 +40,9 @@ struct AlgebraRules {
     bool foldsOntoQuaternions;
     // Bicomplex polynomials iterated as their two duplex components (the SIMD lanes).
     bool duplexForm;
+    // Elements with components 4 .. 7 zero are a subalgebra isomorphic to H: a c and slice there
+    // draw the quaternion set (fractal.cpp, quaternionHalf).
+    bool quaternionHalf;
     // Where orbits escape: not written per row but derived (algebraRules) from the algebra's
     // arithmetic (hypercomplex.h: a multiplicative norm) and the duplex form, so that the two
     // tables cannot disagree.

@@ -37,15 +37,46 @@ std::optional<Fractal> octonionAsQuaternion(const FractalSettings& fractal,
         Slice::isometry(column(0), {column(1), column(2), column(3)}));
 }
 
+// An 8-component algebra whose c and slice lie in the quaternion half (components 0 .. 3, the
+// rest 0): those elements are a subalgebra isomorphic to H (the biquaternion product (a + bh)
+// (c + dh) = (ac - bd) + (ad + bc) h and the octonion product (a, b)(c, d) = (ac - conj(d) b,
+// da + b conj(c)) are ac where b = d = 0), and the formula's own constants are written with 1,
+// i, j and k, so every orbit stays there and is the quaternion orbit: the quaternion set of the
+// formula with the same bailout, through the slice's isometry into H, draws it (the SIMD lanes,
+// the distance estimate). Only slices whose origin is orthogonal to the axes, as for the fold.
+std::optional<Fractal> quaternionHalf(const FractalSettings& fractal,
+                                      const HypercomplexJuliaSet& set, const Slice& slice) {
+    for (double upper : fractal.cUpper)
+        if (upper != 0) return std::nullopt;
+    const Hypercomplex origin = slice.fromWorld(Point3d(0, 0, 0));
+    const std::array<Hypercomplex, 3>& axes = slice.tangents();
+    for (size_t k = 4; k < 8; ++k) {
+        if (origin[k] != 0) return std::nullopt;
+        for (const Hypercomplex& axis : axes)
+            if (axis[k] != 0) return std::nullopt;
+    }
+    for (const Hypercomplex& axis : axes)
+        if (std::fabs(dotProduct(origin, axis)) > 1e-12) return std::nullopt;
+    auto quaternion = [](const Hypercomplex& a) { return Quaternion(a[0], a[1], a[2], a[3]); };
+    auto program = std::make_shared<const FormulaProgram>(
+        FormulaProgram::compile(Formula::parse(fractal.formula), fractal.c));
+    return Fractal(QuaternionJuliaSet(compileFormula(fractal.formula, fractal.c),
+                                      fractal.maxIterations, set.bailout(), std::move(program)),
+                   Slice::isometry(quaternion(origin), {quaternion(axes[0]), quaternion(axes[1]),
+                                                        quaternion(axes[2])}));
+}
+
 }  // namespace
 
 Fractal Fractal::fromSettings(const FractalSettings& fractal, const SliceSettings& slice,
-                              OctonionFolding folding) {
+                              QuaternionPaths paths) {
     const AlgebraRules& rules = algebraRules(fractal.algebra);
     if (!rules.quaternionSet) {
         auto set = hypercomplexJuliaSetOf(fractal);  // checks the formula and bailout first
         Slice through(slice, fractal.algebra);
-        if (rules.foldsOntoQuaternions && folding == OctonionFolding::kWherePossible)
+        if (rules.quaternionHalf && paths == QuaternionPaths::kWherePossible)
+            if (auto same = quaternionHalf(fractal, *set, through)) return std::move(*same);
+        if (rules.foldsOntoQuaternions && paths == QuaternionPaths::kWherePossible)
             if (auto same = octonionAsQuaternion(fractal, *set, through)) return std::move(*same);
         return Fractal(std::move(set), std::move(through));
     }

@@ -19,9 +19,11 @@ namespace quaternia {
 // critical point), the direction from the origin to p, outward for star-shaped sets.
 Vector3d normalOrOutward(const Vector3d& g, const Point3d& p);
 
-// Whether an octonion formula is drawn in the quaternions where its form allows (octonion_fold.h:
-// the SIMD lanes and the mesher then draw it), or always in the octonions (the scalar reference).
-enum class OctonionFolding { kWherePossible, kNever };
+// Whether a set of another algebra that is a quaternion set is drawn as one where its form allows
+// (an octonion real form folded, octonion_fold.h; the quaternion half of the 8-component
+// algebras, fractal.cpp: the SIMD lanes and the mesher then draw it), or always in its own
+// algebra (the scalar reference).
+enum class QuaternionPaths { kWherePossible, kNever };
 
 class Fractal {
   public:
@@ -33,7 +35,7 @@ class Fractal {
     // algebraRules() gives the algebra; throws UserError naming the bad key
     // (scene/scene_fractal.h builds the fractal of a scene).
     static Fractal fromSettings(const FractalSettings& fractal, const SliceSettings& slice,
-                                OctonionFolding folding);
+                                QuaternionPaths paths);
 
     const JuliaSet& set() const { return *set_; }
     // The same, shared: for a consumer that may outlive this Fractal (the lanes' fallback).

@@ -8,11 +8,11 @@
 namespace quaternia {
 
 Fractal fractalFromScene(const Scene& scene) {
-    // The scalar engine is the reference: it draws octonions as octonions.
-    const OctonionFolding folding = scene.render.engine == RenderEngine::Simd
-                                        ? OctonionFolding::kWherePossible
-                                        : OctonionFolding::kNever;
-    return Fractal::fromSettings(scene.fractal, scene.slice, folding);
+    // The scalar engine is the reference: it draws every algebra in itself.
+    const QuaternionPaths paths = scene.render.engine == RenderEngine::Simd
+                                      ? QuaternionPaths::kWherePossible
+                                      : QuaternionPaths::kNever;
+    return Fractal::fromSettings(scene.fractal, scene.slice, paths);
 }
 
 Fractal hypercomplexFractalFromScene(const Scene& scene) {

@@ -1,6 +1,6 @@
 // The scene builds the fractal it describes (fractal/ knows nothing of scene files): its
 // [fractal] and [slice], with octonions folded into the quaternions where the SIMD engine
-// renders them (fractal.h, OctonionFolding).
+// renders them (fractal.h, QuaternionPaths).
 #pragma once
 
 #include <string>
