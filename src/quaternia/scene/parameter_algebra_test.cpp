@@ -4,6 +4,7 @@
 
 #include "quaternia/algebra/test_helpers.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
@@ -109,13 +110,16 @@ TEST(ParameterValidateScene, ChecksTheComponentsOfCAgainstTheAlgebra) {
     setParameter(s, "fractal.algebra", std::string("quaternion"));
     UserError error = validateError(s);
     EXPECT_EQ(error.key(), "fractal.c");
-    EXPECT_STREQ(error.what(), "fractal.c has 8 components; the quaternion algebra needs 4");
+    EXPECT_STREQ(error.what(), "fractal.c has 8 components; the quaternion algebra has 4");
 
+    // A shorter c is filled with zeros: the default c is an octonion's and a biquaternion's.
     s = defaultScene();
-    setParameter(s, "fractal.algebra", std::string("octonion"));
-    error = validateError(s);
-    EXPECT_EQ(error.key(), "fractal.c");
-    EXPECT_STREQ(error.what(), "fractal.c has 4 components; the octonion algebra needs 8");
+    for (const char* algebra : {"octonion", "biquaternion"}) {
+        setParameter(s, "fractal.algebra", std::string(algebra));
+        EXPECT_NO_THROW(validateScene(s)) << algebra;
+        const std::vector<double> c = cComponents(s);
+        EXPECT_EQ(c, (std::vector<double>{-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0})) << algebra;
+    }
 
     for (const char* algebra : {"bicomplex", "coquaternion"}) {
         setParameter(s, "fractal.algebra", std::string(algebra));
@@ -260,6 +264,26 @@ TEST(ParameterHelp, DescribesTheAlgebraAndTheComponentsOfC) {
               std::string::npos);
     EXPECT_LT(help.find("fractal.formula ="), help.find("fractal.algebra ="));
     EXPECT_LT(help.find("fractal.algebra ="), help.find("fractal.c ="));
+}
+
+}  // namespace
+}  // namespace quaternia
+
+namespace quaternia {
+namespace {
+
+// slice.origin of 4 components is the 8-component origin with zeros after them.
+TEST(ParameterValidateScene, AShorterSliceOriginIsFilledWithZeros) {
+    Scene shorter = defaultScene(), full = defaultScene();
+    for (Scene* s : {&shorter, &full})
+        setParameter(*s, "fractal.algebra", std::string("octonion"));
+    setParameter(shorter, "slice.origin", std::vector<double>{0, 0, 0, 0.3});
+    setParameter(full, "slice.origin", std::vector<double>{0, 0, 0, 0.3, 0, 0, 0, 0});
+    EXPECT_NO_THROW(validateScene(shorter));
+    const Hypercomplex a = fractalFromScene(shorter).slice().fromWorld(Point3d(0.1, 0.2, 0.3));
+    const Hypercomplex b = fractalFromScene(full).slice().fromWorld(Point3d(0.1, 0.2, 0.3));
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(a[3], 0.3);
 }
 
 }  // namespace

@@ -101,10 +101,10 @@ std::vector<Parameter> sliceParameters() {
                                    "Extra 4D rotations of the slice in degrees, in the planes "
                                    "(1,i), (1,j), (1,k), (i,j), (i,k), (j,k)"),
                    Motion::Angle),
-        componentsParameter("slice", "origin", &S::slice, &L::origin, {}, {0, 8}, -1000, 1000,
+        componentsParameter("slice", "origin", &S::slice, &L::origin, {}, {0, 4, 8}, -1000, 1000,
                             "Origin of the 3D slice in the 8-component algebras (biquaternion, "
                             "octonion): (x, y, z) stands for origin + x axes[0] + y axes[1] + "
-                            "z axes[2]; empty: 0"),
+                            "z axes[2]; empty: 0; 4 components: the rest 0"),
         componentsParameter("slice", "axes", &S::slice, &L::axes, {}, {0, 24}, -1000, 1000,
                             "Three directions of the 8-component algebra spanning the slice, "
                             "orthonormalised in order; empty: e0, e1, e2 (the quaternion default "

@@ -47,15 +47,16 @@ void upIsNotAlongTheView(const Scene& scene) {
 }
 
 // fractal.c takes 4 or 8 components whichever the algebra, since a scene may set fractal.c
-// before fractal.algebra; here, with both known, the count must be the algebra's dimension, or
-// c would lose components or gain zeros without a word.
+// before fractal.algebra; here, with both known, a shorter c is the algebra's element with zeros
+// in the components not given (so that switching the algebra alone works: the default c of 4
+// components is an octonion's), and a longer one would lose components without a word.
 void constantFitsTheAlgebra(const Scene& scene) {
     const FractalSettings& fractal = scene.fractal;
     const int dimension = algebraDimension(fractal.algebra);
     const std::string algebra(algebraName(fractal.algebra));
-    if (fractal.cComponents != dimension)
+    if (fractal.cComponents > dimension)
         throw UserError("fractal.c", "fractal.c has " + std::to_string(fractal.cComponents) +
-                                         " components; the " + algebra + " algebra needs " +
+                                         " components; the " + algebra + " algebra has " +
                                          std::to_string(dimension));
 }
 
