@@ -24,6 +24,7 @@
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/sanitized_build.h"
 
 namespace quaternia {
@@ -128,6 +129,10 @@ TEST(RenderEngines, EveryPresetAndLookAgrees) {
         if (!testing::runsCase(index++, 2)) continue;
         Scene scene = defaultScene();
         applyPreset(scene, preset.name);
+        // The fixed-step algebras' presets (coquaternion, biquaternion) have no lanes yet: the
+        // scalar engine draws them in both (Marching.ProvenRunsFindThePlainStepsSample holds
+        // their march to plain fixed steps).
+        if (fractalFromScene(scene).distanceKind() == DistanceKind::kLipschitz) continue;
         const bool studio =
             scene.environment.enabled && scene.environment.builtin == EnvironmentBuiltin::Studio;
         expectEnginesAgree(small(scene), preset.name, studio ? 4 : 1);

@@ -39,6 +39,40 @@ const std::vector<Preset>& scenePresets() {
          {{"fractal.formula", std::string("(1+2i) z (0.5-k) z + c")},
           {"fractal.c", std::vector{-0.1, 0.25, 0.1, 0.1}},
           {"camera.fov", 18.0}}},
+        // One per algebra (algebras.md), each with a c that shows its character rather than
+        // dust; fractal.algebra alone takes the default c (a shorter c is filled with zeros).
+        {"bicomplex",
+         "the bicomplex numbers: the product of the rabbit and the basilica, the duplex "
+         "components of c = -0.5613+0.3724i+0.3724j-0.4387k",
+         {{"fractal.algebra", std::string("bicomplex")},
+          {"fractal.formula", std::string("z^2 + c")},
+          {"fractal.c", std::vector{-0.5613, 0.3724, 0.3724, -0.4387}},
+          {"camera.fov", 36.0}}},
+        {"coquaternion",
+         "the split quaternions: a closed shell, on a slice turned 90 degrees in the ik plane "
+         "so that the null lines (along i+j) leave it",
+         {{"fractal.algebra", std::string("coquaternion")},
+          {"fractal.formula", std::string("z^2 + c")},
+          {"fractal.c", std::vector{-0.3, 0.5, 0.2, -0.2}},
+          {"slice.angles", std::vector{0.0, 0.0, 0.0, 0.0, 90.0, 0.0}}}},
+        {"biquaternion",
+         "the complexified quaternions: c = -0.2+0.6i+0.2j+0.2k+0.1ih on the slice spanned "
+         "by i, ih and jh, fluted arms along the null lines",
+         {{"fractal.algebra", std::string("biquaternion")},
+          {"fractal.formula", std::string("z^2 + c")},
+          {"fractal.c", std::vector{-0.2, 0.6, 0.2, 0.2, 0.0, 0.1, 0.0, 0.0}},
+          {"slice.axes", std::vector{0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,  //
+                                     0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0,  //
+                                     0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0}}}},
+        {"octonion",
+         "the octonions: c with every imaginary part, Re c = -0.1226 and |Im c| = 0.7461 (the "
+         "rabbit's), on the slice e0, e1, e6",
+         {{"fractal.algebra", std::string("octonion")},
+          {"fractal.formula", std::string("z^2 + c")},
+          {"fractal.c", std::vector{-0.1226, 0.5, 0.2, 0.2, 0.35, 0.1, 0.29, 0.1}},
+          {"slice.axes", std::vector{1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,  //
+                                     0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,  //
+                                     0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0}}}},
         // Looks (materials and lights, issue 20): the default set, as studio photographs.
         {"studio",
          "a look: the set on a grey floor under a soft key light and a cool rim light",
