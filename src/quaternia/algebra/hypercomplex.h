@@ -59,6 +59,10 @@ class MultiplicationTable {
     Algebra algebra() const { return algebra_; }
     int dimension() const { return dimension_; }
     BasisProduct product(int i, int j) const { return products_[i][j]; }
+    // The table by output: component k of a b is sum_i outputSign(k, i) a_i b_outputPartner(k, i)
+    // (each e_i has one partner e_j with e_i e_j = +-e_k).
+    int outputPartner(int k, int i) const { return outputPartner_[k][i]; }
+    double outputSign(int k, int i) const { return outputSign_[k][i]; }
 
     // sum_ij sign(i, j) a_i b_j e_index(i, j).
     Hypercomplex multiply(const Hypercomplex& a, const Hypercomplex& b) const;

@@ -34,25 +34,25 @@ SegmentForm multiplyFixed(const MultiplicationTable& table, const SegmentForm& x
         ym[k] = std::fabs(y.centre[k]) + std::fabs(y.slope[k]);
         yAll[k] = ym[k] + y.radius[k];
     }
-    std::array<double, D> cc{}, ss{}, cs{}, sc{}, rounding{}, left{}, right{};
-    for (int i = 0; i < D; ++i)
-        for (int j = 0; j < D; ++j) {
-            const BasisProduct p = table.product(i, j);
-            const std::size_t k = std::size_t(p.index), a = std::size_t(i), b = std::size_t(j);
-            const double sign = p.sign;
-            cc[k] += sign * (x.centre[a] * y.centre[b]);
-            ss[k] += sign * (x.slope[a] * y.slope[b]);
-            cs[k] += sign * (x.centre[a] * y.slope[b]);
-            sc[k] += sign * (x.slope[a] * y.centre[b]);
-            rounding[k] += xm[a] * ym[b];
-            left[k] += xm[a] * y.radius[b];
-            right[k] += x.radius[a] * yAll[b];
-        }
     SegmentForm r;
-    for (std::size_t k = 0; k < D; ++k) {
-        r.centre[k] = cc[k] + 0.5 * ss[k];
-        r.slope[k] = cs[k] + sc[k];
-        r.radius[k] = 0.5 * std::fabs(ss[k]) + left[k] + right[k] + 3 * kGamma * rounding[k];
+    for (int k = 0; k < D; ++k) {
+        // Component k's seven sums in registers, by the table's output form.
+        double cc = 0, ss = 0, cs = 0, sc = 0, rounding = 0, left = 0, right = 0;
+        for (int i = 0; i < D; ++i) {
+            const std::size_t a = std::size_t(i), b = std::size_t(table.outputPartner(k, i));
+            const double sign = table.outputSign(k, i);
+            cc += sign * (x.centre[a] * y.centre[b]);
+            ss += sign * (x.slope[a] * y.slope[b]);
+            cs += sign * (x.centre[a] * y.slope[b]);
+            sc += sign * (x.slope[a] * y.centre[b]);
+            rounding += xm[a] * ym[b];
+            left += xm[a] * y.radius[b];
+            right += x.radius[a] * yAll[b];
+        }
+        const std::size_t o = std::size_t(k);
+        r.centre[o] = cc + 0.5 * ss;
+        r.slope[o] = cs + sc;
+        r.radius[o] = 0.5 * std::fabs(ss) + left + right + 3 * kGamma * rounding;
     }
     inflate(r.radius, D);
     return r;
