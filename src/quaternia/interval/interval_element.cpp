@@ -1,5 +1,7 @@
 #include "quaternia/interval/interval_element.h"
 
+#include "quaternia/interval/program_on_forms-inl.h"
+
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -46,22 +48,38 @@ IntervalElement linearMap(const double* m, const IntervalElement& a) {
     return r;
 }
 
-// a^n, n >= 0, by repeated squaring: every algebra of hypercomplex.h is power-associative (the
-// octonions are alternative), so x^a x^b = x^(a+b) whatever the bracketing, and squares are
-// tighter than products.
-IntervalElement power(const MultiplicationTable& table, const IntervalElement& a, int n) {
-    if (n == 0) return pointBox(realElement(1));
-    IntervalElement result{}, base = a;
-    bool first = true;
-    for (int e = n;; e >>= 1) {
-        if (e & 1) {
-            result = first ? base : multiply(table, result, base);
-            first = false;
-        }
-        if (e == 1) return result;
-        base = square(table, base);
+// The operations of boxes, for the one interpreter (program_on_forms-inl.h).
+struct BoxArithmetic {
+    static IntervalElement point(const Hypercomplex& a) { return pointBox(a); }
+    static IntervalElement sum(const IntervalElement& a, const IntervalElement& b, int d) {
+        return quaternia::sum(a, b, d);
     }
-}
+    static IntervalElement difference(const IntervalElement& a, const IntervalElement& b, int d) {
+        return quaternia::difference(a, b, d);
+    }
+    static IntervalElement negated(const IntervalElement& a, int) { return quaternia::negated(a); }
+    static IntervalElement product(const MultiplicationTable& table, const IntervalElement& a,
+                                   const IntervalElement& b) {
+        return multiply(table, a, b);
+    }
+    static IntervalElement square(const MultiplicationTable& table, const IntervalElement& a) {
+        return quaternia::square(table, a);
+    }
+    static IntervalElement scaled(double s, const IntervalElement& a, int d) {
+        return quaternia::scaled(s, a, d);
+    }
+    static IntervalElement linear(const double* m, const IntervalElement& a) {
+        return linearMap(m, a);
+    }
+    static bool outside(const IntervalElement& z, int d, double bailout) {
+        return lowerNormSquared(z, d) > bailout * bailout;
+    }
+    static bool hopeless(const IntervalElement& z, int d, double bailout) {
+        for (std::size_t k = 0; k < std::size_t(d); ++k)
+            if (!(z[k].width() <= 2 * bailout)) return true;
+        return false;
+    }
+};
 
 }  // namespace
 
@@ -138,75 +156,14 @@ std::optional<std::string> withoutIntervalExtension(const FormulaProgram& progra
 
 IntervalElement evaluateOnBox(const FormulaProgram& program, const MultiplicationTable& table,
                               const IntervalElement& box, std::vector<IntervalElement>& registers) {
-    const std::vector<Instruction>& code = program.instructions();
-    if (registers.size() < code.size()) registers.resize(code.size());
-    const int d = table.dimension();
-    const std::vector<Hypercomplex>& constants = program.elements();
-    const double* factors = program.factors().data();
-    for (std::size_t n = 0; n < code.size(); ++n) {
-        const Instruction& i = code[n];
-        const std::size_t a = std::size_t(i.a), b = std::size_t(i.b);
-        IntervalElement& out = registers[n];
-        switch (i.op) {
-            case Op::kZ:
-                out = box;
-                break;
-            case Op::kConstant:
-                out = pointBox(constants[std::size_t(i.index)]);
-                break;
-            case Op::kAdd:
-                out = sum(registers[a], registers[b], d);
-                break;
-            case Op::kSubtract:
-                out = difference(registers[a], registers[b], d);
-                break;
-            case Op::kNegate:
-                out = negated(registers[a]);
-                break;
-            case Op::kMultiply:
-                // The same register twice is the same number: its square is tighter.
-                out = a == b ? square(table, registers[a])
-                             : multiply(table, registers[a], registers[b]);
-                break;
-            case Op::kSquare:
-                out = square(table, registers[a]);
-                break;
-            case Op::kScale:
-                out = scaled(factors[i.index], registers[a], d);
-                break;
-            case Op::kLinear:
-                out = linearMap(factors + i.index, registers[a]);
-                break;
-            case Op::kPower:
-                out = power(table, registers[a], i.index);
-                break;
-            case Op::kFunction:
-            case Op::kRealPower:
-                throw std::logic_error("evaluateOnBox: no interval extension");
-        }
-    }
-    return registers[std::size_t(program.result())];
+    return interval_forms::run<BoxArithmetic>(program, table, box, registers);
 }
 
 bool boxLeavesBall(const FormulaProgram& program, const MultiplicationTable& table,
                    const IntervalElement& box, int maxIterations, double bailout,
                    std::vector<IntervalElement>& registers) {
-    const int d = table.dimension();
-    const double bailoutSquared = bailout * bailout;
-    IntervalElement z = box;
-    for (int n = 0;; ++n) {
-        if (lowerNormSquared(z, d) > bailoutSquared) return true;
-        if (n + 1 >= maxIterations) return false;
-        // A box wider than the ball holds points inside it, and iterates only widen: give up
-        // (false proves nothing), sparing the iterations left.
-        for (std::size_t k = 0; k < std::size_t(d); ++k)
-            if (!(z[k].width() <= 2 * bailout)) return false;
-        z = evaluateOnBox(program, table, z, registers);
-        // Past an overflow the next iterate's bounds would be NaN: decide on this one.
-        for (std::size_t k = 0; k < std::size_t(d); ++k)
-            if (!std::isfinite(z[k].lo) || !std::isfinite(z[k].hi))
-                return lowerNormSquared(z, d) > bailoutSquared;
-    }
+    return interval_forms::leavesBall<BoxArithmetic>(program, table, box, maxIterations, bailout,
+                                                     registers);
 }
 
 }  // namespace quaternia

@@ -158,6 +158,23 @@ TEST(IntervalElement, ProductsAndSquaresHoldTheAlgebrasProducts) {
     }
 }
 
+// z^2 + c with the default c, and the default scene's N and bailout 2.
+HypercomplexFormula defaultQuadratic(Algebra algebra) {
+    return HypercomplexFormula(Formula::parse("z^2 + c"), algebra,
+                               Hypercomplex{-0.2, 0.6, 0.2, 0.2, 0, 0, 0, 0});
+}
+constexpr int kIterations = 12;
+constexpr double kBailout = 2;
+
+// Whether z_0 .. z_{N-1} all lie in the ball |z| <= bailout: membership in K_N, point by point.
+bool inSet(const HypercomplexFormula& formula, Hypercomplex z, int iterations, double bailout) {
+    for (int n = 0; n < iterations; ++n) {
+        if (normSquared(z) > bailout * bailout) return false;
+        z = formula.evaluate(z);
+    }
+    return true;
+}
+
 struct AlgebraFormula {
     Algebra algebra;
     std::string formula;
@@ -211,35 +228,25 @@ TEST(IntervalElement, BoxesLeavingTheBallHoldNoPointOfTheSet) {
     for (Algebra algebra : {Algebra::kCoquaternion, Algebra::kBiquaternion, Algebra::kOctonion,
                             Algebra::kBicomplex}) {
         const int d = algebraDimension(algebra);
-        Hypercomplex c{};
-        c[0] = -0.2, c[1] = 0.6, c[2] = 0.2, c[3] = 0.2;
-        const HypercomplexFormula formula(Formula::parse("z^2 + c"), algebra, c);
+        const HypercomplexFormula formula = defaultQuadratic(algebra);
         const MultiplicationTable& table = MultiplicationTable::of(algebra);
-        const int iterations = 12;
-        const double bailout = 2;
         int proven = 0, far = 0;
         for (int trial = 0; trial < 3000; ++trial) {
             const Hypercomplex centre = randomElement(rng, d, 2.0);
             const IntervalElement box = boxAbout(centre, 0.01, d);
-            if (!boxLeavesBall(formula.program(), table, box, iterations, bailout, registers))
+            if (!boxLeavesBall(formula.program(), table, box, kIterations, kBailout, registers))
                 continue;
             ++proven;
-            for (int point = 0; point < 16; ++point) {
-                Hypercomplex z = pointIn(box, d, rng);
-                bool inside = true;
-                for (int n = 0; n < iterations && inside; ++n) {
-                    inside = normSquared(z) <= bailout * bailout;
-                    z = formula.evaluate(z);
-                }
-                ASSERT_FALSE(inside) << algebraName(algebra);
-            }
+            for (int point = 0; point < 16; ++point)
+                ASSERT_FALSE(inSet(formula, pointIn(box, d, rng), kIterations, kBailout))
+                    << algebraName(algebra);
         }
         for (int trial = 0; trial < 200; ++trial) {
             // Wholly outside the ball: proven at the first iterate.
             Hypercomplex centre = randomElement(rng, d, 1.0);
             centre[0] = 2.5;
-            far += boxLeavesBall(formula.program(), table, boxAbout(centre, 0.2, d), iterations,
-                                 bailout, registers);
+            far += boxLeavesBall(formula.program(), table, boxAbout(centre, 0.2, d), kIterations,
+                                 kBailout, registers);
         }
         EXPECT_EQ(far, 200) << algebraName(algebra);
         EXPECT_GT(proven, 300) << algebraName(algebra);
@@ -302,12 +309,8 @@ TEST(SegmentForm, SegmentsLeavingTheBallHoldNoPointOfTheSet) {
     for (Algebra algebra : {Algebra::kCoquaternion, Algebra::kBiquaternion, Algebra::kOctonion,
                             Algebra::kQuaternion}) {
         const int d = algebraDimension(algebra);
-        Hypercomplex c{};
-        c[0] = -0.2, c[1] = 0.6, c[2] = 0.2, c[3] = 0.2;
-        const HypercomplexFormula formula(Formula::parse("z^2 + c"), algebra, c);
+        const HypercomplexFormula formula = defaultQuadratic(algebra);
         const MultiplicationTable& table = MultiplicationTable::of(algebra);
-        const int iterations = 12;
-        const double bailout = 2;
         int bySegment = 0, byBox = 0;
         for (int trial = 0; trial < 3000; ++trial) {
             const Hypercomplex from = randomElement(rng, d, 1.2);
@@ -318,20 +321,14 @@ TEST(SegmentForm, SegmentsLeavingTheBallHoldNoPointOfTheSet) {
             for (int k = 0; k < d; ++k)
                 box[size_t(k)] = Interval::hull(from[size_t(k)], to[size_t(k)]);
             byBox +=
-                boxLeavesBall(formula.program(), table, box, iterations, bailout, boxRegisters);
+                boxLeavesBall(formula.program(), table, box, kIterations, kBailout, boxRegisters);
             if (!segmentLeavesBall(formula.program(), table, segmentBetween(from, to, 0, d),
-                                   iterations, bailout, registers))
+                                   kIterations, kBailout, registers))
                 continue;
             ++bySegment;
-            for (int point = 0; point < 16; ++point) {
-                Hypercomplex z = from + f(rng) * (to - from);
-                bool inside = true;
-                for (int n = 0; n < iterations && inside; ++n) {
-                    inside = normSquared(z) <= bailout * bailout;
-                    z = formula.evaluate(z);
-                }
-                ASSERT_FALSE(inside) << algebraName(algebra);
-            }
+            for (int point = 0; point < 16; ++point)
+                ASSERT_FALSE(inSet(formula, from + f(rng) * (to - from), kIterations, kBailout))
+                    << algebraName(algebra);
         }
         // Of the segments their boxes leave undecided, the forms prove at least 15% (19% for
         // the coquaternions, 37 to 74% for the others when this was written).

@@ -1,5 +1,7 @@
 #include "quaternia/interval/segment_form.h"
 
+#include "quaternia/interval/program_on_forms-inl.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -8,7 +10,6 @@
 namespace quaternia {
 namespace {
 
-using Op = Instruction::Op;
 using Radius = std::array<double, kMaxAlgebraDimension>;
 
 // gamma_n = n u / (1 - n u) for the at most 2 d^2 + 1 = 129 terms of a product's component (and
@@ -104,24 +105,36 @@ SegmentForm linearMap(const double* m, const SegmentForm& x) {
     return r;
 }
 
-SegmentForm power(const MultiplicationTable& table, const SegmentForm& x, int n) {
-    if (n == 0) {
-        SegmentForm one;
-        one.centre = realElement(1);
-        return one;
+// The operations of segment forms, for the one interpreter (program_on_forms-inl.h).
+struct SegmentArithmetic {
+    static SegmentForm point(const Hypercomplex& a) { return SegmentForm{a, {}, {}}; }
+    static SegmentForm sum(const SegmentForm& a, const SegmentForm& b, int d) {
+        return combined(a, b, 1, d);
     }
-    // Power-associative algebras (interval_element.cpp, power): squares by repeated squaring.
-    SegmentForm result, base = x;
-    bool first = true;
-    for (int e = n;; e >>= 1) {
-        if (e & 1) {
-            result = first ? base : multiply(table, result, base);
-            first = false;
-        }
-        if (e == 1) return result;
-        base = multiply(table, base, base);
+    static SegmentForm difference(const SegmentForm& a, const SegmentForm& b, int d) {
+        return combined(a, b, -1, d);
     }
-}
+    static SegmentForm negated(const SegmentForm& a, int d) { return quaternia::scaled(-1, a, d); }
+    static SegmentForm product(const MultiplicationTable& table, const SegmentForm& a,
+                               const SegmentForm& b) {
+        return multiply(table, a, b);
+    }
+    static SegmentForm square(const MultiplicationTable& table, const SegmentForm& a) {
+        return multiply(table, a, a);
+    }
+    static SegmentForm scaled(double s, const SegmentForm& a, int d) {
+        return quaternia::scaled(s, a, d);
+    }
+    static SegmentForm linear(const double* m, const SegmentForm& a) { return linearMap(m, a); }
+    static bool outside(const SegmentForm& z, int d, double bailout) {
+        return lowerNorm(z, d) > bailout;
+    }
+    static bool hopeless(const SegmentForm& z, int d, double bailout) {
+        for (std::size_t k = 0; k < std::size_t(d); ++k)
+            if (!(std::fabs(z.slope[k]) + z.radius[k] <= 2 * bailout)) return true;
+        return false;
+    }
+};
 
 }  // namespace
 
@@ -169,69 +182,14 @@ double lowerNorm(const SegmentForm& form, int dimension) {
 
 SegmentForm evaluateOnSegment(const FormulaProgram& program, const MultiplicationTable& table,
                               const SegmentForm& form, std::vector<SegmentForm>& registers) {
-    const std::vector<Instruction>& code = program.instructions();
-    if (registers.size() < code.size()) registers.resize(code.size());
-    const int d = table.dimension();
-    const std::vector<Hypercomplex>& constants = program.elements();
-    const double* factors = program.factors().data();
-    for (std::size_t n = 0; n < code.size(); ++n) {
-        const Instruction& i = code[n];
-        const std::size_t a = std::size_t(i.a), b = std::size_t(i.b);
-        SegmentForm& out = registers[n];
-        switch (i.op) {
-            case Op::kZ:
-                out = form;
-                break;
-            case Op::kConstant:
-                out = SegmentForm{constants[std::size_t(i.index)], {}, {}};
-                break;
-            case Op::kAdd:
-                out = combined(registers[a], registers[b], 1, d);
-                break;
-            case Op::kSubtract:
-                out = combined(registers[a], registers[b], -1, d);
-                break;
-            case Op::kNegate:
-                out = scaled(-1, registers[a], d);
-                break;
-            case Op::kMultiply:
-                out = multiply(table, registers[a], registers[b]);
-                break;
-            case Op::kSquare:
-                out = multiply(table, registers[a], registers[a]);
-                break;
-            case Op::kScale:
-                out = scaled(factors[i.index], registers[a], d);
-                break;
-            case Op::kLinear:
-                out = linearMap(factors + i.index, registers[a]);
-                break;
-            case Op::kPower:
-                out = power(table, registers[a], i.index);
-                break;
-            case Op::kFunction:
-            case Op::kRealPower:
-                throw std::logic_error("evaluateOnSegment: no interval extension");
-        }
-    }
-    return registers[std::size_t(program.result())];
+    return interval_forms::run<SegmentArithmetic>(program, table, form, registers);
 }
 
 bool segmentLeavesBall(const FormulaProgram& program, const MultiplicationTable& table,
                        const SegmentForm& form, int maxIterations, double bailout,
                        std::vector<SegmentForm>& registers) {
-    const int d = table.dimension();
-    SegmentForm z = form;
-    for (int n = 0;; ++n) {
-        const double lower = lowerNorm(z, d);
-        if (lower > bailout) return true;
-        if (n + 1 >= maxIterations || !(lower == lower)) return false;
-        // A form wider than the ball's diameter along some axis is rarely proven later, and
-        // iterates only widen: give up (false proves nothing), sparing the iterations left.
-        for (std::size_t k = 0; k < std::size_t(d); ++k)
-            if (!(std::fabs(z.slope[k]) + z.radius[k] <= 2 * bailout)) return false;
-        z = evaluateOnSegment(program, table, z, registers);
-    }
+    return interval_forms::leavesBall<SegmentArithmetic>(program, table, form, maxIterations,
+                                                         bailout, registers);
 }
 
 }  // namespace quaternia
