@@ -37,6 +37,17 @@ std::optional<Fractal> octonionAsQuaternion(const FractalSettings& fractal,
         Slice::isometry(column(0), {column(1), column(2), column(3)}));
 }
 
+// The quaternion set of fractal.formula with c's quaternion part and this bailout: the
+// expanded polynomial, and the lanes' program from the formula as written (parsed again: it
+// parsed in compileFormula).
+QuaternionJuliaSet quaternionSetOf(const FractalSettings& fractal, double bailout) {
+    Polynomial polynomial = compileFormula(fractal.formula, fractal.c);
+    auto program = std::make_shared<const FormulaProgram>(
+        FormulaProgram::compile(Formula::parse(fractal.formula), fractal.c));
+    return QuaternionJuliaSet(std::move(polynomial), fractal.maxIterations, bailout,
+                              std::move(program));
+}
+
 // An 8-component algebra whose c and slice lie in the quaternion half (components 0 .. 3, the
 // rest 0): those elements are a subalgebra isomorphic to H (the biquaternion product (a + bh)
 // (c + dh) = (ac - bd) + (ad + bc) h and the octonion product (a, b)(c, d) = (ac - conj(d) b,
@@ -58,10 +69,7 @@ std::optional<Fractal> quaternionHalf(const FractalSettings& fractal,
     for (const Hypercomplex& axis : axes)
         if (std::fabs(dotProduct(origin, axis)) > 1e-12) return std::nullopt;
     auto quaternion = [](const Hypercomplex& a) { return Quaternion(a[0], a[1], a[2], a[3]); };
-    auto program = std::make_shared<const FormulaProgram>(
-        FormulaProgram::compile(Formula::parse(fractal.formula), fractal.c));
-    return Fractal(QuaternionJuliaSet(compileFormula(fractal.formula, fractal.c),
-                                      fractal.maxIterations, set.bailout(), std::move(program)),
+    return Fractal(quaternionSetOf(fractal, set.bailout()),
                    Slice::isometry(quaternion(origin), {quaternion(axes[0]), quaternion(axes[1]),
                                                         quaternion(axes[2])}));
 }
@@ -80,13 +88,7 @@ Fractal Fractal::fromSettings(const FractalSettings& fractal, const SliceSetting
             if (auto same = octonionAsQuaternion(fractal, *set, through)) return std::move(*same);
         return Fractal(std::move(set), std::move(through));
     }
-    Polynomial polynomial = compileFormula(fractal.formula, fractal.c);
-    // The lanes' program from the formula as written (parsed again: it parsed above).
-    auto program = std::make_shared<const FormulaProgram>(
-        FormulaProgram::compile(Formula::parse(fractal.formula), fractal.c));
-    return Fractal(QuaternionJuliaSet(std::move(polynomial), fractal.maxIterations, fractal.bailout,
-                                      std::move(program)),
-                   Slice(slice));
+    return Fractal(quaternionSetOf(fractal, fractal.bailout), Slice(slice));
 }
 
 DistanceEstimate Fractal::estimate(const Point3d& p) const {
