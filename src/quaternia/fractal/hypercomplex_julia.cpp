@@ -169,12 +169,9 @@ DistanceEstimate HypercomplexJuliaSet::estimate(const Hypercomplex& z0) const {
 bool HypercomplexJuliaSet::excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
                                            double thickness) const {
     if (!intervalExtension_) return false;
-    // Scratch registers per thread: the marchers ask for many segments from every thread.
-    thread_local std::vector<SegmentForm> registers;
     const int d = formula_.dimension();
     return segmentLeavesBall(formula_.program(), MultiplicationTable::of(formula_.algebra()),
-                             segmentBetween(from, to, thickness, d), maxIterations_, bailout_,
-                             registers);
+                             segmentBetween(from, to, thickness, d), maxIterations_, bailout_);
 }
 
 bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {

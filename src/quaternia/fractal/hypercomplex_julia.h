@@ -55,8 +55,9 @@ class HypercomplexJuliaSet final : public JuliaSet {
     std::array<double, 3> potentialGradient(
         const Hypercomplex& z0, const std::array<Hypercomplex, 3>& tangents) const override;
 
-    // Every formula but the bicomplex functions: segments are iterated through the program and
-    // the multiplication table (interval/segment_form.h, segmentLeavesBall).
+    // Every formula but the bicomplex functions without a form (log, tan, ...) and real powers:
+    // segments are iterated through the program and the multiplication table (interval/
+    // segment_form.h, segmentLeavesBall; exp, sin, cos, sinh and cosh by function_forms.h).
     bool provesEmptySpace() const override { return intervalExtension_; }
     bool excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
                          double thickness) const override;

@@ -1,5 +1,7 @@
 #include "quaternia/interval/interval_element.h"
 
+#include "quaternia/interval/function_forms.h"
+
 #include "quaternia/interval/program_on_forms-inl.h"
 
 #include <cmath>
@@ -70,6 +72,30 @@ struct BoxArithmetic {
     }
     static IntervalElement linear(const double* m, const IntervalElement& a) {
         return linearMap(m, a);
+    }
+    // Through the duplex form (function_forms.h): each component's box as a disc about its
+    // centre, and back.
+    static IntervalElement function(FormulaFunction f, const IntervalElement& x) {
+        const Interval re[2] = {x[0] - x[3], x[0] + x[3]}, im[2] = {x[1] + x[2], x[1] - x[2]};
+        Interval imageRe[2], imageIm[2];
+        for (std::size_t k = 0; k < 2; ++k) {
+            const double midRe = 0.5 * (re[k].lo + re[k].hi), midIm = 0.5 * (im[k].lo + im[k].hi);
+            const double halfRe = std::max(midRe - re[k].lo, re[k].hi - midRe);
+            const double halfIm = std::max(midIm - im[k].lo, im[k].hi - midIm);
+            const ComplexForm image = functionOnForm(
+                f, {{midRe, midIm}, {}, roundedUp(std::hypot(halfRe, halfIm) * (1 + 0x1p-50))});
+            imageRe[k] = Interval{roundedDown(image.centre.real() - image.radius),
+                                  roundedUp(image.centre.real() + image.radius)};
+            imageIm[k] = Interval{roundedDown(image.centre.imag() - image.radius),
+                                  roundedUp(image.centre.imag() + image.radius)};
+        }
+        // fromDuplexForm: ((a + b) / 2, (a' + b') / 2, (a' - b') / 2, (b - a) / 2).
+        IntervalElement r = pointBox(Hypercomplex{});
+        r[0] = 0.5 * (imageRe[0] + imageRe[1]);
+        r[1] = 0.5 * (imageIm[0] + imageIm[1]);
+        r[2] = 0.5 * (imageIm[0] - imageIm[1]);
+        r[3] = 0.5 * (imageRe[1] - imageRe[0]);
+        return r;
     }
     static bool outside(const IntervalElement& z, int d, double bailout) {
         return lowerNormSquared(z, d) > bailout * bailout;
@@ -148,7 +174,8 @@ double lowerNormSquared(const IntervalElement& a, int dimension) {
 
 std::optional<std::string> withoutIntervalExtension(const FormulaProgram& program) {
     for (const Instruction& i : program.instructions()) {
-        if (i.op == Op::kFunction) return std::string("a function");
+        if (i.op == Op::kFunction && !hasFunctionForm(FormulaFunction(i.index)))
+            return "the function " + std::string(formulaFunctionName(FormulaFunction(i.index)));
         if (i.op == Op::kRealPower) return std::string("a real power");
     }
     return std::nullopt;

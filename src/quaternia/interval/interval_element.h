@@ -35,9 +35,9 @@ IntervalElement square(const MultiplicationTable& table, const IntervalElement& 
 // A lower bound of |a|^2 over the box (the Euclidean norm of the components).
 double lowerNormSquared(const IntervalElement& a, int dimension);
 
-// The part of a program with no interval extension yet (a function or a real power: the
-// bicomplex numbers' transcendental formulas), named for a one-line refusal; nothing where the
-// whole program has one.
+// The part of a program with no interval extension yet (a real power, or a function other than
+// exp, sin, cos, sinh and cosh: function_forms.h), named for a one-line refusal ("the function
+// log", "a real power"); nothing where the whole program has one.
 std::optional<std::string> withoutIntervalExtension(const FormulaProgram& program);
 
 // Encloses {p(z) : z in box} for a program with an interval extension (the caller checks

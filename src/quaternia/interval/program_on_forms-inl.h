@@ -3,8 +3,9 @@
 // that iterates a form until it is proven outside the bailout ball. `Arithmetic` supplies the
 // form's operations as static functions: point(element), sum(a, b, d), difference(a, b, d),
 // negated(a, d), product(table, a, b), square(table, a), scaled(s, a, d), linear(m, a),
-// outside(form, d, bailout) (proven wholly outside the ball) and hopeless(form, d, bailout)
-// (too wide to be proven later: give up).
+// function(f, a) (a bicomplex function with a form, function_forms.h), outside(form, d, bailout)
+// (proven wholly outside the ball) and hopeless(form, d, bailout) (too wide to be proven later:
+// give up).
 #pragma once
 
 #include <cstddef>
@@ -82,6 +83,8 @@ Form run(const FormulaProgram& program, const MultiplicationTable& table, const 
                 out = power<Arithmetic>(table, registers[a], i.index);
                 break;
             case Op::kFunction:
+                out = Arithmetic::function(FormulaFunction(i.index), registers[a]);
+                break;
             case Op::kRealPower:
                 throw std::logic_error("interval forms: no interval extension");
         }

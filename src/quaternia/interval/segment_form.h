@@ -48,13 +48,12 @@ double lowerNorm(const SegmentForm& form, int dimension);
 // Encloses {p(z) : z in form} for a program with an interval extension (interval_element.h,
 // withoutIntervalExtension), with the dependence on e kept to first order.
 SegmentForm evaluateOnSegment(const FormulaProgram& program, const MultiplicationTable& table,
-                              const SegmentForm& form, std::vector<SegmentForm>& registers);
+                              const SegmentForm& form);
 
 // Whether no point of the form belongs to K_N of p with this bailout: some iterate z_n,
 // n < maxIterations, lies wholly outside the ball |z| <= bailout for every point. False proves
 // nothing (it also gives up where a remainder has grown past the ball).
 bool segmentLeavesBall(const FormulaProgram& program, const MultiplicationTable& table,
-                       const SegmentForm& form, int maxIterations, double bailout,
-                       std::vector<SegmentForm>& registers);
+                       const SegmentForm& form, int maxIterations, double bailout);
 
 }  // namespace quaternia

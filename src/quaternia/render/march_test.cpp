@@ -166,6 +166,8 @@ TEST(Marching, ProvenRunsFindThePlainStepsSample) {
           "fractal.c=[-0.2, 0.6, 0.2, 0.2, 0.1, 0, 0.05, 0]"}},
         {"bicomplex",
          {"fractal.algebra=\"bicomplex\"", "fractal.c=[-0.5613, 0.3724, 0.3724, -0.4387]"}},
+        {"bicomplex functions",
+         {"fractal.algebra=\"bicomplex\"", "fractal.formula=\"sin(z) + 0.2 exp(z) + c\""}},
     };
     std::mt19937 rng(42);
     std::uniform_real_distribution<double> u(-1, 1);
