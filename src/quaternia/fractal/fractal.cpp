@@ -97,12 +97,13 @@ DistanceEstimate Fractal::estimate(const Point3d& p) const {
     return e;
 }
 
-bool Fractal::excludesSegment(const Ray& ray, double t0, double t1) const {
+bool Fractal::excludesTube(const Ray& ray, double t0, double t1, double radius) const {
     const Hypercomplex a = slice_.fromWorld(ray.at(t0)), b = slice_.fromWorld(ray.at(t1));
     double largest = 0;
     for (size_t i = 0; i < a.size(); ++i)
         largest = std::max({largest, std::fabs(a[i]), std::fabs(b[i])});
-    return set_->excludesSegment(a, b, 1e-12 * (1 + largest));
+    return set_->excludesSegment(a, b,
+                                 radius / slice_.stepScale() * (1 + 1e-12) + 1e-12 * (1 + largest));
 }
 
 Vector3d Fractal::normal(const Point3d& p) const {

@@ -62,7 +62,13 @@ class Fractal {
     // excludesSegment): the slice is affine, so the segment's image is the segment between its
     // ends' images, thickened by 1e-12 (1 + |q|) for the rounding of the slice's map (a few
     // dozen operations, each of relative error 2^-53). False proves nothing.
-    bool excludesSegment(const Ray& ray, double t0, double t1) const;
+    bool excludesSegment(const Ray& ray, double t0, double t1) const {
+        return excludesTube(ray, t0, t1, 0);
+    }
+    // The same for every point within `radius` (world units) of that segment: a tube, whose
+    // image in the algebra lies within radius / Slice::stepScale() of the segment's image in
+    // every component (render/proven_cones.h proves the cones of blocks of pixels this way).
+    bool excludesTube(const Ray& ray, double t0, double t1, double radius) const;
     // Unit outward normal from the analytic Jacobian (one pass, docs/methods.md, Normals).
     Vector3d normal(const Point3d& p) const;
     // Unit normal from central differences of the potential ln|z_M|, step h: the simple

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace quaternia {
 
@@ -82,7 +83,7 @@ MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSetti
 }
 
 SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double tStart, double tEnd,
-                                 double step, int maxSteps) {
+                                 double step, int maxSteps, double provenUntil, int64_t firstSpan) {
     SampleCrossing crossing;
     crossing.tOutside = tStart;
     if (fractal.provesEmptySegments()) {
@@ -91,12 +92,20 @@ SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double 
         if (!(samples >= 0)) return crossing;
         const int64_t last = int64_t(std::min(samples, 1e15));
         auto at = [&](int64_t k) { return tStart + double(k) * step; };
-        int64_t span = kFirstSpan;
+        int64_t first = 0;  // the first sample not known outside
+        if (provenUntil >= at(0)) {
+            first = int64_t(std::min(std::floor((provenUntil - tStart) / step), double(last)));
+            while (first > 0 && !(at(first) <= provenUntil))
+                --first;
+            crossing.tOutside = at(first);
+            ++first;
+        }
+        int64_t span = std::clamp<int64_t>(firstSpan, 1, kLongestSpan);
         int proofs = 0;  // in a row at this span: the run doubles after two
         // Near the surface runs of two fail again and again: after such a failure this many
         // samples are tested one by one before a run is tried again (doubling while it fails).
         int64_t oneByOne = 0, backOff = 1;
-        for (int64_t k = 0; k <= last && crossing.steps < maxSteps;) {
+        for (int64_t k = first; k <= last && crossing.steps < maxSteps;) {
             ++crossing.steps;
             if (span > 1 && oneByOne == 0) {
                 const int64_t end = std::min(k + span - 1, last);
@@ -152,10 +161,21 @@ SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double 
 }
 
 MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
-                           const RayInterval& interval) {
+                           double provenUntil) {
+    if (!(provenUntil > 0)) return fixedStepMarch(fractal, ray, settings);
+    if (provenUntil == std::numeric_limits<double>::infinity()) return MarchResult();
+    auto interval = intersectSphere(ray, fractal.boundingRadius());
+    return interval ? fixedStepMarch(fractal, ray, settings, *interval, provenUntil)
+                    : MarchResult();
+}
+
+MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
+                           const RayInterval& interval, double provenUntil) {
     MarchResult result;
-    const SampleCrossing crossing = firstSampleInside(fractal, ray, interval.tNear, interval.tFar,
-                                                      settings.step, settings.maxSteps);
+    // Past a cone's proof (proven_cones.h) the set is near: short runs first.
+    const SampleCrossing crossing = firstSampleInside(
+        fractal, ray, interval.tNear, interval.tFar, settings.step, settings.maxSteps, provenUntil,
+        provenUntil > 0 ? kSpanAfterCone : kFirstSpan);
     result.steps = crossing.steps;
     result.iterations = crossing.iterations;
     result.closest = crossing.closest;

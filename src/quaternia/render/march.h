@@ -88,7 +88,8 @@ struct MarchResult {
 // Algorithm 2's samples t_k = tStart + k step (k = 0, 1, ... while t_k <= tEnd) along a ray
 // through a set whose membership is all that is known (DistanceKind::kLipschitz), each tested
 // for membership, the first inside one found. Where the set proves empty boxes
-// (Fractal::provesEmptySegments: every formula but the bicomplex functions) runs of samples are
+// (Fractal::provesEmptySegments: every formula but the bicomplex functions without a form,
+// interval/function_forms.h, and real powers) runs of samples are
 // crossed at once where Fractal::excludesSegment proves the segment that holds them outside K_N,
 // the runs doubled after two proofs in a row (from kFirstSpan up to kLongestSpan samples) and
 // halved after each failure down to a single sample (and after a run of two fails, up to
@@ -105,8 +106,13 @@ struct SampleCrossing {
     double closest = 1;             // the least distance bound met (where they are taken)
 };
 inline constexpr int64_t kFirstSpan = 64, kLongestSpan = 1024, kLongestOneByOne = 64;
+// The first runs of a ray past its cone's proof, where the set is near.
+inline constexpr int64_t kSpanAfterCone = 8;
+// Samples at or before `provenUntil` are known outside K_N (ProvenCones, proven_cones.h): the
+// crossing starts after them, its runs at `firstSpan` samples.
 SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double tStart, double tEnd,
-                                 double step, int maxSteps);
+                                 double step, int maxSteps, double provenUntil = 0,
+                                 int64_t firstSpan = kFirstSpan);
 
 // The ray from where it enters the set's bounding sphere to where it leaves it.
 MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings);
@@ -118,7 +124,10 @@ MarchResult march(const Fractal& fractal, const Ray& ray, const MarchSettings& s
 MarchResult sphereTrace(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
                         const RayInterval& interval);
 MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
-                           const RayInterval& interval);
+                           const RayInterval& interval, double provenUntil = 0);
+// Fixed steps of a ray whose samples up to `provenUntil` are known outside K_N (firstSampleInside).
+MarchResult fixedStepMarch(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
+                           double provenUntil);
 MarchResult march(const Fractal& fractal, const Ray& ray, const MarchSettings& settings,
                   const RayInterval& interval);
 

@@ -18,6 +18,7 @@
 #include "quaternia/render/lane_tile_renderer.h"
 #include "quaternia/render/lanes/march_lanes.h"
 #include "quaternia/render/march.h"
+#include "quaternia/render/proven_cones.h"
 #include "quaternia/render/sample_pattern.h"
 #include "quaternia/render/scalar_waves.h"
 #include "quaternia/render/shade.h"
@@ -35,8 +36,9 @@ struct alignas(64) ThreadTotals {
     std::unique_ptr<LaneTileRenderer> laneTiles;  // the SIMD path's batches
     bool laneTilesBound = false;                  // to this call's frame
     std::vector<PixelSamples> pixels;
-    AdaptiveScratch adaptive;  // the scalar path's adaptive sampling (adaptive_driver.h)
-    std::vector<Rgba> row;     // a tile's row on its way to RenderResult::pngPixels
+    AdaptiveScratch adaptive;         // the scalar path's adaptive sampling (adaptive_driver.h)
+    std::vector<Rgba> row;            // a tile's row on its way to RenderResult::pngPixels
+    std::vector<double> provenUntil;  // the scalar path's cones of proof (proven_cones.h)
 };
 
 // Where render.alpha is "opaque" and the caller asked for samples: the rows go straight to PNG
@@ -145,35 +147,50 @@ class FrameRenderer {
     Rgba finishPixel(int px, int py, const PixelSamples& pixel, const Color& background) const;
     // Sample k of pixel (px, py) traced and added to its sums (not counted in pixel.samples);
     // the sample's colour where it hit.
+    // `provenUntil`: how far the pixel's rays are proven outside K_N (ProvenCones::clear).
     std::optional<Color> traceSample(int px, int py, int k, PixelSamples& pixel, RenderStats& stats,
-                                     ShadingStats& shading) const;
+                                     ShadingStats& shading, double provenUntil) const;
     // traceSample, counted in pixel.samples.
     std::optional<Color> addSample(int px, int py, int k, PixelSamples& pixel, RenderStats& stats,
-                                   ShadingStats& shading) const {
+                                   ShadingStats& shading, double provenUntil) const {
         ++pixel.samples;
-        return traceSample(px, py, k, pixel, stats, shading);
+        return traceSample(px, py, k, pixel, stats, shading, provenUntil);
     }
     // The scalar path as adaptive sampling's tracer: each sample on its own.
     class ScalarSampleTracer final : public SampleTracer {
       public:
-        ScalarSampleTracer(const FrameRenderer& frame, RenderStats& stats, ShadingStats& shading)
-            : frame_(frame), stats_(stats), shading_(shading) {}
+        ScalarSampleTracer(const FrameRenderer& frame, const Tile& tile,
+                           const std::vector<double>& provenUntil, RenderStats& stats,
+                           ShadingStats& shading)
+            : frame_(frame),
+              tile_(tile),
+              provenUntil_(provenUntil),
+              stats_(stats),
+              shading_(shading) {}
         void traceFirstSamples(const Tile&, std::span<const SampleRequest> requests,
                                std::vector<PixelSamples>& firstPass) override {
             for (const SampleRequest& r : requests)
-                frame_.traceSample(r.px, r.py, r.k, firstPass[size_t(r.target)], stats_, shading_);
+                frame_.traceSample(r.px, r.py, r.k, firstPass[size_t(r.target)], stats_, shading_,
+                                   proven(r));
         }
         void traceRound(std::span<const SampleRequest> round, std::vector<PixelSamples>& pixels,
                         const DeviationTracking* tracking, bool) override {
             for (const SampleRequest& r : round) {
-                const auto colour =
-                    frame_.traceSample(r.px, r.py, r.k, pixels[size_t(r.target)], stats_, shading_);
+                const auto colour = frame_.traceSample(r.px, r.py, r.k, pixels[size_t(r.target)],
+                                                       stats_, shading_, proven(r));
                 if (colour && tracking) tracking->add(r.target, *colour, frame_.shader_);
             }
         }
 
       private:
+        double proven(const SampleRequest& r) const {
+            if (provenUntil_.empty()) return 0;
+            return provenUntil_[size_t(r.py - tile_.y0) * size_t(tile_.x1 - tile_.x0) +
+                                size_t(r.px - tile_.x0)];
+        }
         const FrameRenderer& frame_;
+        const Tile& tile_;
+        const std::vector<double>& provenUntil_;
         RenderStats& stats_;
         ShadingStats& shading_;
     };
@@ -199,6 +216,8 @@ class FrameRenderer {
     const double depthNear_, depthRange_;
     // The SIMD path where the formula and marcher allow it (march_lanes.h).
     std::optional<LaneFractal> lanes_;
+    // The scalar fixed steps' cones of proof, where they are active.
+    const ProvenCones cones_;
     // A background of one colour (its top and bottom alike), in float as backgroundRow gives it
     // to finishPixel, and that colour display-encoded as the rows' encoding would.
     bool uniformBackground_;
@@ -232,6 +251,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const RenderOptions& options, c
       passes_(options.passes),
       depthNear_(std::max(0.0, length(scene.camera.position) - fractal_.boundingRadius())),
       depthRange_(length(scene.camera.position) + fractal_.boundingRadius() - depthNear_),
+      cones_(fractal_, camera_, march_.method == MarchMethod::FixedStep ? march_.step : 0),
       uniformBackground_(shader_.uniformBackground()),
       backgroundColor_(float(shader_.backgroundBottom().x), float(shader_.backgroundBottom().y),
                        float(shader_.backgroundBottom().z)),
@@ -292,10 +312,12 @@ Rgba FrameRenderer::finishPixel(int px, int py, const PixelSamples& pixel,
 
 // The scalar path: sample k of the pixel marched and shaded on its own, added to its sums.
 std::optional<Color> FrameRenderer::traceSample(int px, int py, int k, PixelSamples& pixel,
-                                                RenderStats& stats, ShadingStats& shading) const {
+                                                RenderStats& stats, ShadingStats& shading,
+                                                double provenUntil) const {
     auto [sx, sy] = samplePosition(k, samples_, px, py);
     Ray ray = camera_.generateRay(px + sx, py + sy, lensSample(k, px, py));
-    MarchResult marched = march(fractal_, ray, march_);
+    MarchResult marched = provenUntil > 0 ? fixedStepMarch(fractal_, ray, march_, provenUntil)
+                                          : march(fractal_, ray, march_);
     stats.marchSteps += marched.steps;
     stats.iterations += marched.iterations;
     ++stats.rays;
@@ -330,17 +352,23 @@ void FrameRenderer::renderTileScalar(const Tile& tile, ThreadTotals& thread) con
             paths.traceUniform(UniformSamples(samples_, onlySample_), thread.pixels);
         }
     } else if (adaptive_) {
-        ScalarSampleTracer tracer(*this, thread.stats, shading);
+        if (cones_.active())
+            thread.stats.marchSteps += cones_.clear(tile, thread.provenUntil);
+        else
+            thread.provenUntil.clear();
+        ScalarSampleTracer tracer(*this, tile, thread.provenUntil, thread.stats, shading);
         renderAdaptively(tile, camera_.width(), camera_.height(), samples_, shader_, tracer,
                          thread.adaptive, thread.pixels);
     } else {
         const UniformSamples taken(samples_, onlySample_);
         thread.pixels.assign(size_t(tile.x1 - tile.x0) * size_t(tile.y1 - tile.y0), PixelSamples{});
+        if (cones_.active()) thread.stats.marchSteps += cones_.clear(tile, thread.provenUntil);
         PixelSamples* pixel = thread.pixels.data();
-        for (int py = tile.y0; py < tile.y1; ++py) {
-            for (int px = tile.x0; px < tile.x1; ++px, ++pixel) {
+        for (int py = tile.y0, i = 0; py < tile.y1; ++py) {
+            for (int px = tile.x0; px < tile.x1; ++px, ++pixel, ++i) {
+                const double proven = cones_.active() ? thread.provenUntil[size_t(i)] : 0;
                 for (int k = taken.first; k < taken.end; ++k)
-                    addSample(px, py, k, *pixel, thread.stats, shading);
+                    addSample(px, py, k, *pixel, thread.stats, shading, proven);
             }
         }
     }

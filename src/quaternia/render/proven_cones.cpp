@@ -1,0 +1,87 @@
+#include "quaternia/render/proven_cones.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "quaternia/render/march.h"
+
+namespace quaternia {
+namespace {
+
+// A block's cone gives up, and splits, where a run of this many steps fails; its children start
+// with runs this many times as long.
+constexpr double kShortestRun = 16, kChildRun = 4;
+// Blocks of this side end the splitting: their pixels' rays go on one by one.
+constexpr int kSmallestBlock = 2;
+
+}  // namespace
+
+ProvenCones::ProvenCones(const Fractal& fractal, const Camera& camera, double step)
+    : fractal_(fractal),
+      camera_(camera),
+      step_(step),
+      boundingRadius_(fractal.boundingRadius()),
+      active_(fractal.provesEmptySegments() && !camera.thinLens() && step > 0) {}
+
+int64_t ProvenCones::clear(const Tile& tile, std::vector<double>& provenUntil) const {
+    const int width = tile.x1 - tile.x0;
+    provenUntil.assign(size_t(width) * size_t(tile.y1 - tile.y0), 0.0);
+    int64_t tests = 0;
+    if (!active_) return tests;
+    // On the image's grid, whatever the tile.
+    for (int y = tile.y0 / kBlock * kBlock; y < tile.y1; y += kBlock)
+        for (int x = tile.x0 / kBlock * kBlock; x < tile.x1; x += kBlock)
+            clearBlock(x, y, kBlock, 0, tile, provenUntil, tests);
+    return tests;
+}
+
+void ProvenCones::clearBlock(int x0, int y0, int size, double from, const Tile& tile,
+                             std::vector<double>& provenUntil, int64_t& tests) const {
+    const Ray centre = camera_.generateRay(x0 + 0.5 * size, y0 + 0.5 * size);
+    double rho = 0;
+    for (int corner = 0; corner < 4; ++corner) {
+        const Ray edge = camera_.generateRay(x0 + (corner & 1) * size, y0 + (corner >> 1) * size);
+        rho = std::max(rho, length(edge.direction - centre.direction));
+    }
+    rho = rho * (1 + 1e-9) + 1e-15;  // past the rounding of the directions
+    // No ray of the block meets the set's ball before the central ray meets the ball widened by
+    // the cone's radius at the farthest point of the set.
+    const double farthest = length(centre.origin) + boundingRadius_;
+    const auto interval = intersectSphere(centre, boundingRadius_ + rho * farthest);
+    double t = interval ? std::max(from, interval->tNear) : 0;
+    const double tFar = interval ? interval->tFar : 0;
+    double span = (from > 0 ? kShortestRun * kChildRun : double(kFirstSpan)) * step_;
+    int proofs = 0;
+    while (t < tFar) {
+        const double end = std::min(t + span, tFar);
+        ++tests;
+        if (fractal_.excludesTube(centre, t, end, rho * end)) {
+            t = end;
+            if (++proofs == 2) {
+                span = std::min(2 * span, double(kLongestSpan) * step_);
+                proofs = 0;
+            }
+        } else {
+            proofs = 0;
+            span *= 0.5;
+            if (span < kShortestRun * step_) break;
+        }
+    }
+    const bool missed = !(t < tFar);
+    if (missed || size <= kSmallestBlock) {
+        const double until = missed ? std::numeric_limits<double>::infinity() : t;
+        const int width = tile.x1 - tile.x0;
+        for (int py = std::max(y0, tile.y0); py < std::min(y0 + size, tile.y1); ++py)
+            for (int px = std::max(x0, tile.x0); px < std::min(x0 + size, tile.x1); ++px)
+                provenUntil[size_t(py - tile.y0) * size_t(width) + size_t(px - tile.x0)] = until;
+        return;
+    }
+    const int half = size / 2;
+    for (int y = y0; y < y0 + size; y += half)
+        for (int x = x0; x < x0 + size; x += half)
+            if (x < tile.x1 && x + half > tile.x0 && y < tile.y1 && y + half > tile.y0)
+                clearBlock(x, y, half, t, tile, provenUntil, tests);
+}
+
+}  // namespace quaternia
