@@ -36,5 +36,7 @@ bool hasFunctionForm(FormulaFunction f);
 // Encloses {f(w) : w in the form} in a form of the same e (header comment). Infinite or NaN
 // where f overflows: such a form proves nothing.
 ComplexForm functionOnForm(FormulaFunction f, const ComplexForm& w);
+// |z| rounded up (for the forms' rounding terms).
+double upperAbs(const std::complex<double>& z);
 
 }  // namespace quaternia

@@ -156,8 +156,8 @@ struct FixedArithmetic {
             r.slope = {
                 0.5 * (a.slope.real() + b.slope.real()), 0.5 * (a.slope.imag() + b.slope.imag()),
                 0.5 * (a.slope.imag() - b.slope.imag()), 0.5 * (b.slope.real() - a.slope.real())};
-            const double rounding = kUlp * (std::abs(a.centre) + std::abs(b.centre) +
-                                            std::abs(a.slope) + std::abs(b.slope));
+            const double rounding = kUlp * (upperAbs(a.centre) + upperAbs(b.centre) +
+                                            upperAbs(a.slope) + upperAbs(b.slope));
             for (std::size_t k = 0; k < 4; ++k)
                 r.radius[k] = 0.5 * (a.radius + b.radius) + rounding;
             inflate(r.radius, 4);
