@@ -56,7 +56,7 @@ function sliderRange(parameter) {
 function componentNames(parameter, count) {
   if (parameter.type === 'components') {
     // e0 .. e7 of the algebra; grouped values (slice.axes) as axis:component.
-    const group = parameter.group || count;
+    const group = parameter.groups ? count / parameter.groups : count;
     const named = COMPONENT_NAMES[parameter.name] || [];
     return Array.from({ length: count }, (_, i) => named[i] ??
       (count > group ? `${Math.floor(i / group) + 1}:` : '') + 'e' + (i % group));
@@ -95,7 +95,7 @@ function numberWidget(parameter, id, label, initial, onValue) {
   });
   row.append(tag, slider, box);
   const update = (v) => { slider.value = v; box.value = v; };
-  return { row, update };
+  return { row, update, tag };
 }
 
 // Builds every control into `container`. `state` maps names to values and is changed in place;
@@ -194,11 +194,16 @@ function buildComponents(control, parameter, state, onChange, updaters) {
       menu.add(new Option(length ? `${length} components` : 'not given', length));
     menu.value = state[name].length;
     menu.addEventListener('change', () => {
-      const group = parameter.group;
-      // Axes given anew start as e0, e1, e2 (the default slice), not as zeros.
+      const groups = parameter.groups, length = +menu.value;
+      const group = groups ? length / groups : 0;
+      // Axes given anew start as e0, e1, e2 (the default slice), not as zeros; grouped values
+      // keep each group's leading components.
       const axis = (_, i) => (i % group === Math.floor(i / group) ? 1 : 0);
-      state[name] = group && !state[name].length ? Array.from({ length: +menu.value }, axis)
-        : resized(state[name], +menu.value);
+      const old = state[name], oldGroup = groups ? old.length / groups : 0;
+      state[name] = group && !old.length ? Array.from({ length }, axis)
+        : group && length ? Array.from({ length }, (_, i) =>
+          (i % group < oldGroup ? old[Math.floor(i / group) * oldGroup + (i % group)] : 0))
+          : resized(old, length);
       onChange(name);
     });
     control.append(menu);
@@ -217,9 +222,15 @@ function buildComponents(control, parameter, state, onChange, updaters) {
   }
   const update = () => {
     if (menu) menu.value = state[name].length;
+    // Grouped values name their components by the length given (slice.axes: 3 axes of 4 or 8).
+    const shown = parameter.groups && state[name].length
+      ? componentNames(parameter, state[name].length) : names;
     rows.forEach((widget, i) => {
       widget.row.hidden = i >= state[name].length;
-      if (i < state[name].length) widget.update(state[name][i]);
+      if (i < state[name].length) {
+        widget.update(state[name][i]);
+        widget.tag.textContent = shown[i];
+      }
     });
   };
   update();

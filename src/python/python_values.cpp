@@ -61,12 +61,13 @@ ParameterValue parameterValueOf(const Parameter& parameter, py::handle value) {
 py::object pythonValueOf(const Parameter& parameter, const ParameterValue& value) {
     if (const auto* numbers = std::get_if<std::vector<double>>(&value)) {
         py::list list;
-        const std::size_t group = parameter.groupLength;
-        if (group == 0) {
+        const std::size_t groups = parameter.groups;
+        if (groups == 0 || numbers->size() % groups != 0) {
             for (double x : *numbers)
                 list.append(x);
             return list;
         }
+        const std::size_t group = numbers->size() / groups;
         for (std::size_t begin = 0; begin < numbers->size(); begin += group) {
             py::list row;
             for (std::size_t i = begin; i < begin + group && i < numbers->size(); ++i)

@@ -167,9 +167,10 @@ std::string parameterTableJson(const Scene& base) {
         entry["maximum"] = p.maximum;
         entry["choices"] = p.choices;
         entry["allowed"] = p.allowedIntegers;
-        // Components: the allowed lengths, and the length of a group where there are groups.
+        // Components: the allowed lengths, and how many arrays of equal length a value may be
+        // written as (0: one).
         entry["lengths"] = p.lengths;
-        entry["group"] = p.groupLength;
+        entry["groups"] = p.groups;
         entry["help"] = p.help;
         table.push_back(std::move(entry));
     }

@@ -41,15 +41,16 @@ Slice::Slice(const SliceSettings& settings, Algebra algebra)
     if (dimension_ == 8) {
         for (size_t n = 0; n < settings.origin.size() && n < 8; ++n)
             origin_[n] = settings.origin[n];
-        if (settings.axes.size() != 24) {
+        if (settings.axes.size() != 24 && settings.axes.size() != 12) {
             tangents_ = {basisElement(0), basisElement(1), basisElement(2)};
             return;
         }
-        // Gram-Schmidt in the order given.
+        // Gram-Schmidt in the order given; axes of 4 components have the rest 0.
+        const size_t perAxis = settings.axes.size() / 3;
         for (size_t a = 0; a < 3; ++a) {
             Hypercomplex v{};
-            for (size_t n = 0; n < 8; ++n)
-                v[n] = settings.axes[8 * a + n];
+            for (size_t n = 0; n < perAxis; ++n)
+                v[n] = settings.axes[perAxis * a + n];
             const double given = std::sqrt(normSquared(v));
             for (size_t b = 0; b < a; ++b)
                 v = v - dotProduct(v, tangents_[b]) * tangents_[b];

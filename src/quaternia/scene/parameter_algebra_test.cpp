@@ -4,6 +4,7 @@
 
 #include "quaternia/algebra/test_helpers.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_file.h"
 #include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
 
@@ -133,7 +134,8 @@ TEST(ParameterSlice, TakesOriginAndAxesOfTheirLengths) {
     EXPECT_EQ(origin.defaultValue, ParameterValue(std::vector<double>{}));
     EXPECT_EQ(axes.defaultValue, ParameterValue(std::vector<double>{}));
     EXPECT_EQ(describeType(origin), "an empty array or an array of 4 or 8 numbers");
-    EXPECT_EQ(describeType(axes), "an empty array or an array of 24 numbers (or 3 arrays of 8)");
+    EXPECT_EQ(describeType(axes),
+              "an empty array or an array of 12 or 24 numbers (or 3 arrays of 4 or 8)");
     Scene s = octonionScene();
     setParameter(s, "slice.origin", kOrigin);
     setParameter(s, "slice.axes", kAxes);
@@ -151,8 +153,8 @@ TEST(ParameterSlice, TakesOriginAndAxesOfTheirLengths) {
     error = setError("slice.axes", std::vector<double>(8, 1.0));
     EXPECT_EQ(error.key(), "slice.axes");
     EXPECT_EQ(std::string(error.what())
-                  .rfind("slice.axes must be an empty array or an array of 24 numbers (or 3 "
-                         "arrays of 8), got [1.0, ",
+                  .rfind("slice.axes must be an empty array or an array of 12 or 24 numbers "
+                         "(or 3 arrays of 4 or 8), got [1.0, ",
                          0),
               0u)
         << error.what();
@@ -260,7 +262,7 @@ TEST(ParameterHelp, DescribesTheAlgebraAndTheComponentsOfC) {
         << help;
     EXPECT_NE(help.find("  fractal.c = [-0.2, 0.6, 0.2, 0.2]    (4 or 8 reals, each in [-10, 10])"),
               std::string::npos);
-    EXPECT_NE(help.find("  slice.axes = []    (empty or 24 reals, each in [-1000, 1000])"),
+    EXPECT_NE(help.find("  slice.axes = []    (empty, 12 or 24 reals, each in [-1000, 1000])"),
               std::string::npos);
     EXPECT_LT(help.find("fractal.formula ="), help.find("fractal.algebra ="));
     EXPECT_LT(help.find("fractal.algebra ="), help.find("fractal.c ="));
@@ -284,6 +286,35 @@ TEST(ParameterValidateScene, AShorterSliceOriginIsFilledWithZeros) {
     const Hypercomplex b = fractalFromScene(full).slice().fromWorld(Point3d(0.1, 0.2, 0.3));
     EXPECT_EQ(a, b);
     EXPECT_EQ(a[3], 0.3);
+}
+
+// slice.axes of 4 components each (12 numbers, or three arrays of 4 in a scene file) are the
+// same directions with components 4 .. 7 zero; their independence is checked alike.
+TEST(ParameterValidateScene, ShorterSliceAxesAreFilledWithZeros) {
+    Scene shorter = parseScene(
+        "[fractal]\nalgebra = \"biquaternion\"\n[slice]\n"
+        "axes = [[0, 1, 0, 0], [0, 0, 1, 0.5], [0, 0, 0, 1]]\n");
+    EXPECT_EQ(shorter.slice.axes.size(), 12u);
+    EXPECT_NO_THROW(validateScene(shorter));
+    Scene full = shorter;
+    setParameter(full, "slice.axes",
+                 std::vector<double>{0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0.5, 0, 0, 0, 0,  //
+                                     0, 0, 0, 1, 0, 0, 0, 0});
+    for (const Point3d p : {Point3d(0.1, 0.2, 0.3), Point3d(-1, 0.5, 2)})
+        EXPECT_EQ(fractalFromScene(shorter).slice().fromWorld(p),
+                  fractalFromScene(full).slice().fromWorld(p));
+    // Written back as three arrays of 4.
+    EXPECT_NE(sceneToToml(shorter).find("axes = [[0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.5], "),
+              std::string::npos)
+        << sceneToToml(shorter);
+    setParameter(shorter, "slice.axes",
+                 std::vector<double>{0, 1, 0, 0, 0, 0, 1, 0, 0, 2, 0, 0});  // axis 3 = 2 axis 1
+    try {
+        validateScene(shorter);
+        ADD_FAILURE() << "dependent axes accepted";
+    } catch (const UserError& e) {
+        EXPECT_EQ(e.key(), "slice.axes");
+    }
 }
 
 }  // namespace

@@ -158,16 +158,16 @@ Parameter vectorParameter(std::string section, std::string key, Part part, Field
 }
 
 // A vector of reals whose allowed lengths are `lengths` (ParameterType::Components), stored as
-// is in a std::vector<double> field; `groupLength` as Parameter::groupLength.
+// is in a std::vector<double> field; `groups` as Parameter::groups.
 template <typename Part, typename Section>
 Parameter componentsParameter(std::string section, std::string key, Part part,
                               std::vector<double> Section::*field, std::vector<double> defaultValue,
                               std::vector<std::size_t> lengths, double minimum, double maximum,
-                              std::string help, std::size_t groupLength = 0) {
+                              std::string help, std::size_t groups = 0) {
     Parameter p = makeParameter(std::move(section), std::move(key), ParameterType::Components,
                                 std::move(defaultValue), minimum, maximum, std::move(help));
     p.lengths = std::move(lengths);
-    p.groupLength = groupLength;
+    p.groups = groups;
     p.apply = [part, field](Scene& scene, const ParameterValue& value) {
         partOf(scene, part).*field = std::get<std::vector<double>>(value);
     };

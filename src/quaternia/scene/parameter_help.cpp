@@ -103,10 +103,14 @@ std::string describeType(const Parameter& p) {
             for (std::size_t n : p.lengths)
                 if (n > 0) counts.push_back(n);
             std::string out = "an array of " + lengthsText(counts) + " numbers";
-            if (p.groupLength > 0 && counts.size() == 1 && counts[0] % p.groupLength == 0 &&
-                counts[0] > p.groupLength)
-                out += " (or " + std::to_string(counts[0] / p.groupLength) + " arrays of " +
-                       std::to_string(p.groupLength) + ")";
+            if (p.groups > 0) {
+                std::vector<std::size_t> lengths;
+                for (std::size_t n : counts)
+                    if (n % p.groups == 0) lengths.push_back(n / p.groups);
+                if (!lengths.empty())
+                    out += " (or " + std::to_string(p.groups) + " arrays of " +
+                           lengthsText(lengths) + ")";
+            }
             if (counts.size() < p.lengths.size()) out = "an empty array or " + out;
             return out;
         }

@@ -105,11 +105,11 @@ std::vector<Parameter> sliceParameters() {
                             "Origin of the 3D slice in the 8-component algebras (biquaternion, "
                             "octonion): (x, y, z) stands for origin + x axes[0] + y axes[1] + "
                             "z axes[2]; empty: 0; 4 components: the rest 0"),
-        componentsParameter("slice", "axes", &S::slice, &L::axes, {}, {0, 24}, -1000, 1000,
+        componentsParameter("slice", "axes", &S::slice, &L::axes, {}, {0, 12, 24}, -1000, 1000,
                             "Three directions of the 8-component algebra spanning the slice, "
                             "orthonormalised in order; empty: e0, e1, e2 (the quaternion default "
-                            "slice)",
-                            8),
+                            "slice); 4 components each: the rest 0",
+                            3),
     };
 }
 

@@ -109,13 +109,14 @@ std::string formatValue(const ParameterValue& value) {
 
 std::string formatParameterValue(const Parameter& p, const ParameterValue& value) {
     const auto* v = std::get_if<std::vector<double>>(&value);
-    if (p.groupLength == 0 || v == nullptr || v->empty() || v->size() % p.groupLength != 0)
+    if (p.groups == 0 || v == nullptr || v->empty() || v->size() % p.groups != 0)
         return formatValue(value);
+    const std::size_t length = v->size() / p.groups;
     std::string out = "[";
-    for (std::size_t start = 0; start < v->size(); start += p.groupLength) {
+    for (std::size_t start = 0; start < v->size(); start += length) {
         if (start > 0) out += ", ";
         out += formatValue(std::vector<double>(v->begin() + std::ptrdiff_t(start),
-                                               v->begin() + std::ptrdiff_t(start + p.groupLength)));
+                                               v->begin() + std::ptrdiff_t(start + length)));
     }
     return out + "]";
 }

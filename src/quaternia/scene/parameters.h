@@ -51,9 +51,9 @@ struct Parameter {
     std::vector<int64_t> allowedIntegers;  // Integer: if not empty, the only allowed values
     // Components: the allowed numbers of components, ascending (0: the empty array).
     std::vector<std::size_t> lengths;
-    // Components: if not 0, scene files and --set may also write the value as arrays of this
-    // many numbers each (slice.axes: three arrays of 8), which are read one after the other.
-    std::size_t groupLength = 0;
+    // Components: if not 0, scene files and --set may also write the value as this many arrays
+    // of equal length (slice.axes: three arrays of 4 or 8), which are read one after the other.
+    std::size_t groups = 0;
     std::string help;                 // one line, for --help, scene files and tooltips
     Motion motion = Motion::Numeric;  // how an animation moves it between keys
 
@@ -117,8 +117,8 @@ std::string describeRange(const Parameter& parameter);
 // A value in TOML syntax, exactly: reals always carry a '.' or exponent (or are nan / inf) and
 // have the shortest digits that read back to the same double; strings are quoted and escaped.
 std::string formatValue(const ParameterValue& value);
-// formatValue, but a value of a parameter with a groupLength is written as arrays of that many
-// numbers ([[1.0, 0.0, ...], [...], [...]]), as scene files may write it.
+// formatValue, but a value of a parameter with groups is written as that many arrays
+// ([[1.0, 0.0, ...], [...], [...]]), as scene files may write it.
 std::string formatParameterValue(const Parameter& parameter, const ParameterValue& value);
 
 // Every parameter with its type, default (in TOML syntax), allowed values and help, grouped by

@@ -7,7 +7,7 @@
 //   [render]
 //   width = 640
 //
-// Keys left out keep their defaults. slice.axes may also be written as three arrays of 8
+// Keys left out keep their defaults. slice.axes may also be written as three arrays of 8 (or 4)
 // numbers, [[a0 .. a7], [b0 .. b7], [c0 .. c7]], here and in --set; sceneToToml writes it so.
 // Every error is a UserError that names the file, line and column and the key, and for an
 // unknown section or key suggests the nearest valid one.

@@ -320,16 +320,20 @@ TEST(SceneFile, ReadsSliceAxesNestedOrFlatAlike) {
 }
 
 TEST(SceneFile, RejectsSliceAxesOfTheWrongShape) {
-    // Arrays of 8 numbers each, three of them; nested arrays are for slice.axes alone.
+    // Three arrays of 8 numbers each, or of 4; nested arrays are for slice.axes alone.
     UserError error = parseError("[slice]\naxes = [[1, 0], [0, 1], [1, 1]]\n");
     EXPECT_EQ(error.key(), "slice.axes");
     EXPECT_STREQ(error.what(),
-                 "scene.toml:2:1: slice.axes must be an empty array or an array of 24 numbers (or "
-                 "3 arrays of 8), got [[1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]");
+                 "scene.toml:2:1: slice.axes must be an empty array or an array of 12 or 24 "
+                 "numbers (or 3 arrays of 4 or 8), got [1.0, 0.0, 0.0, 1.0, 1.0, 1.0]");
+    EXPECT_EQ(parseError("[slice]\naxes = [[1, 0, 0, 0], [0, 1, 0, 0, 0, 0, 0, 0], [0, 0, 1, 0]]\n")
+                  .key(),
+              "slice.axes");
     error = parseError("[slice]\naxes = [[1, 0, 0, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0, 0, 0]]\n");
     EXPECT_EQ(error.key(), "slice.axes");
-    EXPECT_NE(std::string(error.what()).find("must be an empty array or an array of 24 numbers"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(error.what()).find("must be an empty array or an array of 12 or 24 numbers"),
+        std::string::npos)
         << error.what();
     EXPECT_EQ(parseError("[slice]\naxes = [[1, 0, 0, 0, 0, 0, 0, 0], 1]\n").key(), "slice.axes");
     error = parseError("[fractal]\nc = [[1, 2], [3, 4]]\n");

@@ -85,7 +85,8 @@ void sliceAxesAreIndependent(const Scene& scene) {
     if (!hasEightComponents(scene)) return;
     const std::vector<double>& axes = scene.slice.axes;
     if (axes.empty()) return;
-    constexpr std::size_t kDimension = 8;
+    // 8 components per axis, or 4 (the rest 0).
+    const std::size_t kDimension = axes.size() / 3;
     std::vector<std::vector<double>> units;
     for (std::size_t a = 0; a * kDimension < axes.size(); ++a) {
         std::vector<double> v(axes.begin() + std::ptrdiff_t(a * kDimension),

@@ -37,13 +37,15 @@ std::optional<ParameterValue> toParameterValue(const toml::node& node, const Par
     if (const auto* array = node.as_array()) {
         std::vector<double> numbers;
         if (appendNumbers(*array, numbers)) return value(std::move(numbers));
-        // Arrays of groupLength numbers each ([[a0 .. a7], [b0 .. b7], [c0 .. c7]]), flattened.
-        const std::size_t group = parameter != nullptr ? parameter->groupLength : 0;
-        if (group == 0) return std::nullopt;
+        // `groups` arrays of equal length ([[a0 .. a7], [b0 .. b7], [c0 .. c7]]), flattened.
+        const std::size_t groups = parameter != nullptr ? parameter->groups : 0;
+        if (groups == 0 || array->size() != groups) return std::nullopt;
         numbers.clear();
+        const auto* first = array->get(0)->as_array();
         for (const auto& element : *array) {
             const auto* inner = element.as_array();
-            if (inner == nullptr || inner->size() != group || !appendNumbers(*inner, numbers))
+            if (inner == nullptr || first == nullptr || inner->size() != first->size() ||
+                !appendNumbers(*inner, numbers))
                 return std::nullopt;
         }
         return value(std::move(numbers));

@@ -14,8 +14,8 @@ namespace quaternia {
 struct Parameter;
 
 // Integers, floats, booleans, strings and arrays of numbers (integers and floats mixed, read
-// as reals); nothing for tables, dates, times and other arrays. For a `parameter` with a
-// groupLength (slice.axes), an array of arrays of exactly that many numbers each is read too,
+// as reals); nothing for tables, dates, times and other arrays. For a `parameter` with groups
+// (slice.axes), an array of exactly that many arrays of numbers, all of one length, is read too,
 // as the numbers one after the other.
 std::optional<ParameterValue> toParameterValue(const toml::node& node,
                                                const Parameter* parameter = nullptr);
