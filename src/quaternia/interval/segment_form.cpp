@@ -182,8 +182,10 @@ struct FixedArithmetic {
         return false;
     }
 
-    static Form narrowed(const SegmentForm& form) {
-        Form r;
+    // The first D components of each part, from one kind of form to the other.
+    template <class To, class From>
+    static To converted(const From& form) {
+        To r;
         for (std::size_t k = 0; k < kD; ++k) {
             r.centre[k] = form.centre[k];
             r.slope[k] = form.slope[k];
@@ -191,15 +193,8 @@ struct FixedArithmetic {
         }
         return r;
     }
-    static SegmentForm widened(const Form& form) {
-        SegmentForm r;
-        for (std::size_t k = 0; k < kD; ++k) {
-            r.centre[k] = form.centre[k];
-            r.slope[k] = form.slope[k];
-            r.radius[k] = form.radius[k];
-        }
-        return r;
-    }
+    static Form narrowed(const SegmentForm& form) { return converted<Form>(form); }
+    static SegmentForm widened(const Form& form) { return converted<SegmentForm>(form); }
     // Each thread's registers for the interpreter: the marchers test many segments from every
     // thread.
     static std::vector<Form>& registers() {
