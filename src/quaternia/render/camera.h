@@ -52,6 +52,8 @@ class Camera {
     int width() const { return width_; }
     int height() const { return height_; }
     const Point3d& position() const { return position_; }
+    // The unit view axis.
+    const Vector3d& forward() const { return forward_; }
 
   private:
     Point3d position_;

@@ -36,6 +36,14 @@ int64_t ProvenCones::clear(const Tile& tile, std::vector<double>& provenUntil) c
     return tests;
 }
 
+void ProvenCones::markPixels(int x0, int y0, int size, double until, const Tile& tile,
+                             std::vector<double>& provenUntil) {
+    const int width = tile.x1 - tile.x0;
+    for (int py = std::max(y0, tile.y0); py < std::min(y0 + size, tile.y1); ++py)
+        for (int px = std::max(x0, tile.x0); px < std::min(x0 + size, tile.x1); ++px)
+            provenUntil[size_t(py - tile.y0) * size_t(width) + size_t(px - tile.x0)] = until;
+}
+
 void ProvenCones::clearBlock(int x0, int y0, int size, double from, const Tile& tile,
                              std::vector<double>& provenUntil, int64_t& tests) const {
     const Ray centre = camera_.generateRay(x0 + 0.5 * size, y0 + 0.5 * size);
@@ -45,6 +53,15 @@ void ProvenCones::clearBlock(int x0, int y0, int size, double from, const Tile& 
         rho = std::max(rho, length(edge.direction - centre.direction));
     }
     rho = rho * (1 + 1e-9) + 1e-15;  // past the rounding of the directions
+    // The largest angle at a corner needs the cone to stay in front of the image plane (the
+    // directions within the cone's angle of the centre meet the plane in an ellipse): the
+    // centre's angle to the view axis plus the cone's below 90 degrees, which cos(centre's) >
+    // rho (at least the sine of the cone's angle) ensures. Only near a field of view of 180
+    // degrees does it fail; those pixels keep what their parent proved.
+    if (!(dot(centre.direction, camera_.forward()) > rho)) {
+        markPixels(x0, y0, size, from, tile, provenUntil);
+        return;
+    }
     // No ray of the block meets the set's ball before the central ray meets the ball widened by
     // the cone's radius at the farthest point of the set.
     const double farthest = length(centre.origin) + boundingRadius_;
@@ -70,11 +87,8 @@ void ProvenCones::clearBlock(int x0, int y0, int size, double from, const Tile& 
     }
     const bool missed = !(t < tFar);
     if (missed || size <= kSmallestBlock) {
-        const double until = missed ? std::numeric_limits<double>::infinity() : t;
-        const int width = tile.x1 - tile.x0;
-        for (int py = std::max(y0, tile.y0); py < std::min(y0 + size, tile.y1); ++py)
-            for (int px = std::max(x0, tile.x0); px < std::min(x0 + size, tile.x1); ++px)
-                provenUntil[size_t(py - tile.y0) * size_t(width) + size_t(px - tile.x0)] = until;
+        markPixels(x0, y0, size, missed ? std::numeric_limits<double>::infinity() : t, tile,
+                   provenUntil);
         return;
     }
     const int half = size / 2;

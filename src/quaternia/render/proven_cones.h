@@ -48,6 +48,9 @@ class ProvenCones {
   private:
     void clearBlock(int x0, int y0, int size, double from, const Tile& tile,
                     std::vector<double>& provenUntil, int64_t& tests) const;
+    // The pixels of the block (those in the tile) proven up to `until`.
+    static void markPixels(int x0, int y0, int size, double until, const Tile& tile,
+                           std::vector<double>& provenUntil);
 
     const Fractal& fractal_;
     const Camera& camera_;

@@ -18,6 +18,7 @@ namespace {
 struct ConeCase {
     const char* name;
     std::vector<const char*> overrides;
+    bool proves = true;  // whether most pixels should be proven something
 };
 
 // Rays through two points of each pixel: its centre and near a corner (samples of several per
@@ -34,6 +35,11 @@ constexpr double kSampleOffsets[2][2] = {{0.5, 0.5}, {0.03, 0.97}};
 TEST(Marching, ConesOfProofKeepTheRaysSamples) {
     const std::vector<ConeCase> cases = {
         {"coquaternion", {"fractal.algebra=\"coquaternion\""}},
+        // At 170 degrees a block of 16 of 40 pixels spans more than 90 degrees: its cone gives up
+        // (proven_cones.cpp), and the rays march alone.
+        {"coquaternion seen at 170 degrees",
+         {"fractal.algebra=\"coquaternion\"", "camera.fov=170", "camera.position=[0, 0, -2.2]"},
+         false},
         {"biquaternion",
          {"fractal.algebra=\"biquaternion\"", "fractal.c=[-0.2, 0.6, 0.2, 0.2, 0, 0.1, 0, 0]",
           "slice.axes=[[0,1,0,0,0,0,0,0],[0,0,0,0,0,1,0,0],[0,0,0,0,0,0,1,0]]"}},
@@ -97,8 +103,12 @@ TEST(Marching, ConesOfProofKeepTheRaysSamples) {
             }
         // What they spare shows at full size (bench/run.sh); at this size a block is a third of
         // the picture, and the cones must still prove whole pixels clear.
-        EXPECT_GT(hits, width * height / 10) << test.name;
-        EXPECT_GT(provenPixels, width * height / 2) << test.name << ", " << cleared << " cleared";
+        EXPECT_GT(hits, test.proves ? width * height / 10 : 10) << test.name;
+        if (test.proves)
+            EXPECT_GT(provenPixels, width * height / 2)
+                << test.name << ", " << cleared << " cleared";
+        else
+            EXPECT_EQ(provenPixels, 0) << test.name;
     }
 }
 
