@@ -183,8 +183,12 @@ class FrameRenderer {
         }
 
       private:
+        // Adaptive sampling also traces the first samples of neighbours in other tiles, at the
+        // tile's edge: nothing is proven for them here.
         double proven(const SampleRequest& r) const {
             if (provenUntil_.empty()) return 0;
+            if (r.px < tile_.x0 || r.px >= tile_.x1 || r.py < tile_.y0 || r.py >= tile_.y1)
+                return 0;
             return provenUntil_[size_t(r.py - tile_.y0) * size_t(tile_.x1 - tile_.x0) +
                                 size_t(r.px - tile_.x0)];
         }

@@ -15,6 +15,7 @@
 #include "quaternia/image/png_io.h"
 #include "quaternia/render/sample_pattern.h"
 #include "quaternia/scene/parameters.h"
+#include "quaternia/scene/scene_file.h"
 #include "quaternia/scene/test_scenes.h"
 #include "quaternia/util/error.h"
 #include "quaternia/util/sanitized_build.h"
@@ -89,6 +90,30 @@ TEST(Render, WindowHasTheWholeImagesPixels) {
                                       whole.pngPixels.data() + size_t(y) * row + 64 * 3, partRow));
         }
     }
+}
+
+// The same for the scalar fixed steps' cones of proof (proven_cones.h), which hold distances for
+// the tile's own pixels: adaptive sampling's neighbours in other tiles march on their own.
+TEST(Render, WindowHasTheWholeImagesPixelsThroughConesOfProof) {
+    Scene scene = defaultScene();
+    applyOverride(scene, "fractal.algebra=\"coquaternion\"");
+    scene.render.width = 128;
+    scene.render.height = 100;
+    scene.render.samples = 4;
+    scene.render.adaptive = true;
+    scene.render.step = 0.004;
+    RenderOptions options;
+    options.depth = true;
+    const RenderResult whole = render(scene, options);
+    options.window = Tile{64, 64, 128, 100};
+    const RenderResult part = render(scene, options);
+    int hits = 0;
+    for (int y = 64; y < 100; ++y)
+        for (int x = 64; x < 128; ++x) {
+            ASSERT_EQ(part.depth.at(x - 64, y - 64), whole.depth.at(x, y)) << x << "," << y;
+            hits += whole.depth.at(x, y) < 1;
+        }
+    EXPECT_GT(hits, 0);
 }
 
 TEST(Render, WindowMustBeAlignedAndInside) {
