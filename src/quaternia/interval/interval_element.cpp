@@ -82,8 +82,8 @@ struct BoxArithmetic {
             const double midRe = 0.5 * (re[k].lo + re[k].hi), midIm = 0.5 * (im[k].lo + im[k].hi);
             const double halfRe = std::max(midRe - re[k].lo, re[k].hi - midRe);
             const double halfIm = std::max(midIm - im[k].lo, im[k].hi - midIm);
-            const ComplexForm image = functionOnForm(
-                f, {{midRe, midIm}, {}, roundedUp(std::hypot(halfRe, halfIm) * (1 + 0x1p-50))});
+            const ComplexForm image =
+                functionOnForm(f, {{midRe, midIm}, {}, roundedUp(upperAbs({halfRe, halfIm}))});
             imageRe[k] = Interval{roundedDown(image.centre.real() - image.radius),
                                   roundedUp(image.centre.real() + image.radius)};
             imageIm[k] = Interval{roundedDown(image.centre.imag() - image.radius),

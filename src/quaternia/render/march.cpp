@@ -100,30 +100,25 @@ SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double 
             crossing.tOutside = at(first);
             ++first;
         }
-        int64_t span = std::clamp<int64_t>(firstSpan, 1, kLongestSpan);
-        int proofs = 0;  // in a row at this span: the run doubles after two
+        ProofRuns runs{std::clamp<int64_t>(firstSpan, 1, kLongestSpan)};
         // Near the surface runs of two fail again and again: after such a failure this many
         // samples are tested one by one before a run is tried again (doubling while it fails).
         int64_t oneByOne = 0, backOff = 1;
         for (int64_t k = first; k <= last && crossing.steps < maxSteps;) {
             ++crossing.steps;
-            if (span > 1 && oneByOne == 0) {
-                const int64_t end = std::min(k + span - 1, last);
+            if (runs.span > 1 && oneByOne == 0) {
+                const int64_t end = std::min(k + runs.span - 1, last);
                 if (fractal.excludesSegment(ray, at(k), at(end))) {
                     crossing.tOutside = at(end);
                     k = end + 1;
                     backOff = 1;
-                    if (++proofs == 2) {
-                        span = std::min(2 * span, kLongestSpan);
-                        proofs = 0;
-                    }
+                    runs.proved();
                 } else {
-                    proofs = 0;
-                    if (span == 2) {
+                    if (runs.span == 2) {
                         oneByOne = backOff;
                         backOff = std::min<int64_t>(2 * backOff, kLongestOneByOne);
                     }
-                    span /= 2;
+                    runs.failed();
                 }
                 continue;
             }
@@ -134,7 +129,7 @@ SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double 
             crossing.tOutside = at(k);
             ++k;
             if (oneByOne > 0) --oneByOne;
-            span = std::max<int64_t>(span, 2);
+            runs.span = std::max<int64_t>(runs.span, 2);
         }
         return crossing;
     }

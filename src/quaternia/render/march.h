@@ -106,6 +106,23 @@ struct SampleCrossing {
     double closest = 1;             // the least distance bound met (where they are taken)
 };
 inline constexpr int64_t kFirstSpan = 64, kLongestSpan = 1024, kLongestOneByOne = 64;
+// The length of the next run to prove, in samples: doubled after two proofs in a row, up to
+// kLongestSpan, and halved after a failure (a ray's runs here, a block's cone's in
+// proven_cones.h).
+struct ProofRuns {
+    int64_t span = kFirstSpan;
+    int proofs = 0;  // in a row at this span
+    void proved() {
+        if (++proofs == 2) {
+            span = std::min(2 * span, kLongestSpan);
+            proofs = 0;
+        }
+    }
+    void failed() {
+        proofs = 0;
+        span /= 2;
+    }
+};
 // The first runs of a ray past its cone's proof, where the set is near.
 inline constexpr int64_t kSpanAfterCone = 8;
 // Samples at or before `provenUntil` are known outside K_N (ProvenCones, proven_cones.h): the

@@ -9,9 +9,8 @@
 namespace quaternia {
 namespace {
 
-// A block's cone gives up, and splits, where a run of this many steps fails; its children start
-// with runs this many times as long.
-constexpr double kShortestRun = 16, kChildRun = 4;
+// A block's cone gives up, and splits, where a run of this many steps fails.
+constexpr int64_t kShortestRun = 16;
 // Blocks of this side end the splitting: their pixels' rays go on one by one.
 constexpr int kSmallestBlock = 2;
 
@@ -68,21 +67,16 @@ void ProvenCones::clearBlock(int x0, int y0, int size, double from, const Tile& 
     const auto interval = intersectSphere(centre, boundingRadius_ + rho * farthest);
     double t = interval ? std::max(from, interval->tNear) : 0;
     const double tFar = interval ? interval->tFar : 0;
-    double span = (from > 0 ? kShortestRun * kChildRun : double(kFirstSpan)) * step_;
-    int proofs = 0;
+    ProofRuns runs;  // in steps, as a ray's
     while (t < tFar) {
-        const double end = std::min(t + span, tFar);
+        const double end = std::min(t + double(runs.span) * step_, tFar);
         ++tests;
         if (fractal_.excludesTube(centre, t, end, rho * end)) {
             t = end;
-            if (++proofs == 2) {
-                span = std::min(2 * span, double(kLongestSpan) * step_);
-                proofs = 0;
-            }
+            runs.proved();
         } else {
-            proofs = 0;
-            span *= 0.5;
-            if (span < kShortestRun * step_) break;
+            runs.failed();
+            if (runs.span < kShortestRun) break;
         }
     }
     const bool missed = !(t < tFar);

@@ -7,13 +7,12 @@
 // within a given angle form a convex conic). So a tube about the central ray of radius rho t1
 // holds every ray's points from t0 to t1 (Fractal::excludesTube proves it outside K_N), and
 // each ray of the block may start past the proven part. Runs of the central ray are proven as
-// the rays' own runs are (doubling after two proofs, halving after a failure); where a run of
-// a few steps fails the block splits into four, each going on from there, down to single
-// pixels: far from the set a block of 16 x 16 pixels takes the proofs that one ray took, and
-// near it the pixels' own rays take over. Amanatides's cone tracing (1984) with proofs in
-// place of distance bounds, as Knoll et al. 2009 cast frusta of rays through interval
-// arithmetic ("Fast ray tracing of arbitrary implicit surfaces with interval and affine
-// arithmetic", Computer Graphics Forum 28(1)).
+// the rays' own runs are (ProofRuns, march.h); where a run of 16 steps fails the block splits
+// into four, each going on from there, down to blocks of 2 x 2 pixels: far from the set a block of
+// 16 x 16 pixels takes the proofs that one ray took, and near it the pixels' own rays take over.
+// Amanatides's cone tracing (1984) with proofs in place of distance bounds, as Knoll et al. 2009
+// cast frusta of rays through interval arithmetic ("Fast ray tracing of arbitrary implicit surfaces
+// with interval and affine arithmetic", Computer Graphics Forum 28(1)).
 //
 // Blocks lie on the image's grid of kBlock pixels whatever the tile, and a ray's first inside
 // sample does not depend on where it starts among samples proven outside: the picture is the
@@ -41,8 +40,8 @@ class ProvenCones {
     bool active() const { return active_; }
 
     // For each pixel of `tile` (row by row), a distance up to which every ray through the pixel
-    // is proven outside K_N (0 where nothing is, infinity where the whole ray is); returns the
-    // tubes tested.
+    // is proven outside K_N (0 where nothing is, and everywhere where the cones are not active;
+    // infinity where the whole ray is); returns the tubes tested.
     int64_t clear(const Tile& tile, std::vector<double>& provenUntil) const;
 
   private:

@@ -186,7 +186,6 @@ class FrameRenderer {
         // Adaptive sampling also traces the first samples of neighbours in other tiles, at the
         // tile's edge: nothing is proven for them here.
         double proven(const SampleRequest& r) const {
-            if (provenUntil_.empty()) return 0;
             if (r.px < tile_.x0 || r.px >= tile_.x1 || r.py < tile_.y0 || r.py >= tile_.y1)
                 return 0;
             return provenUntil_[size_t(r.py - tile_.y0) * size_t(tile_.x1 - tile_.x0) +
@@ -356,21 +355,18 @@ void FrameRenderer::renderTileScalar(const Tile& tile, ThreadTotals& thread) con
             paths.traceUniform(UniformSamples(samples_, onlySample_), thread.pixels);
         }
     } else if (adaptive_) {
-        if (cones_.active())
-            thread.stats.marchSteps += cones_.clear(tile, thread.provenUntil);
-        else
-            thread.provenUntil.clear();
+        thread.stats.marchSteps += cones_.clear(tile, thread.provenUntil);
         ScalarSampleTracer tracer(*this, tile, thread.provenUntil, thread.stats, shading);
         renderAdaptively(tile, camera_.width(), camera_.height(), samples_, shader_, tracer,
                          thread.adaptive, thread.pixels);
     } else {
         const UniformSamples taken(samples_, onlySample_);
         thread.pixels.assign(size_t(tile.x1 - tile.x0) * size_t(tile.y1 - tile.y0), PixelSamples{});
-        if (cones_.active()) thread.stats.marchSteps += cones_.clear(tile, thread.provenUntil);
+        thread.stats.marchSteps += cones_.clear(tile, thread.provenUntil);
         PixelSamples* pixel = thread.pixels.data();
         for (int py = tile.y0, i = 0; py < tile.y1; ++py) {
             for (int px = tile.x0; px < tile.x1; ++px, ++pixel, ++i) {
-                const double proven = cones_.active() ? thread.provenUntil[size_t(i)] : 0;
+                const double proven = thread.provenUntil[size_t(i)];
                 for (int k = taken.first; k < taken.end; ++k)
                     addSample(px, py, k, *pixel, thread.stats, shading, proven);
             }
