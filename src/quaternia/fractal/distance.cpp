@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "quaternia/fractal/escape_time.h"
+#include "quaternia/interval/interval_element.h"
+#include "quaternia/interval/segment_form.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
@@ -84,7 +86,8 @@ QuaternionJuliaSet::QuaternionJuliaSet(Polynomial polynomial, int maxIterations,
       power_(polynomial_.powerForm()),
       maxIterations_(maxIterations),
       escapeRadius_(polynomial_.escapeRadius()),
-      degree_(polynomial_.degree()) {
+      degree_(polynomial_.degree()),
+      intervalExtension_(!withoutIntervalExtension(*program_)) {
     if (bailout != 0 && !(bailout > 1)) {
         throw UserError("fractal.bailout",
                         "fractal.bailout must be 0 (automatic) or greater than 1, got " +
@@ -104,6 +107,23 @@ DistanceEstimate QuaternionJuliaSet::estimate(const Quaternion& z0) const {
                            degree_, estimateRadiusSquared_};
     return withMap(power_, polynomial_,
                    [&](const auto& map) { return estimateWith(map, limits, z0); });
+}
+
+std::optional<std::string> QuaternionJuliaSet::unprovablePart() const {
+    return withoutIntervalExtension(*program_);
+}
+
+bool QuaternionJuliaSet::excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
+                                         double thickness) const {
+    if (!intervalExtension_) return false;
+    return segmentLeavesBall(*program_, MultiplicationTable::of(Algebra::kQuaternion),
+                             segmentBetween(from, to, thickness, 4), maxIterations_, bailout_);
+}
+
+bool QuaternionJuliaSet::includesBox(const Hypercomplex& centre, double radius) const {
+    if (!intervalExtension_) return false;
+    return boxAboutStaysInBall(*program_, MultiplicationTable::of(Algebra::kQuaternion), centre,
+                               radius, maxIterations_, bailout_);
 }
 
 bool QuaternionJuliaSet::contains(const Quaternion& z0) const {

@@ -83,6 +83,13 @@ class QuaternionJuliaSet final : public JuliaSet {
             {quaternionOf(tangents[0]), quaternionOf(tangents[1]), quaternionOf(tangents[2])});
     }
 
+    // The proofs of interval/ through the program (the sets marched by their estimate do not
+    // cross by them: provesEmptySpace stays false; the certificates use them).
+    std::optional<std::string> unprovablePart() const override;
+    bool excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
+                         double thickness) const override;
+    bool includesBox(const Hypercomplex& centre, double radius) const override;
+
     const Polynomial& polynomial() const { return polynomial_; }
     const FormulaProgram& program() const { return *program_; }
     int maxIterations() const override { return maxIterations_; }
@@ -102,6 +109,7 @@ class QuaternionJuliaSet final : public JuliaSet {
     double bailout_;
     int degree_;
     double estimateRadiusSquared_;  // where the continuation stops
+    bool intervalExtension_;         // !unprovablePart()
 };
 
 }  // namespace quaternia

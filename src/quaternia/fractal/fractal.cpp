@@ -106,6 +106,14 @@ bool Fractal::excludesTube(const Ray& ray, double t0, double t1, double radius) 
                                  radius / slice_.stepScale() * (1 + 1e-12) + 1e-12 * (1 + largest));
 }
 
+bool Fractal::includesPoint(const Point3d& p) const {
+    const Hypercomplex q = slice_.fromWorld(p);
+    double largest = 0;
+    for (double x : q)
+        largest = std::max(largest, std::fabs(x));
+    return set_->includesBox(q, 1e-12 * (1 + largest));
+}
+
 Vector3d Fractal::normal(const Point3d& p) const {
     auto g = set_->potentialGradient(slice_.fromWorld(p), slice_.tangents());
     return normalOrOutward(Vector3d(g[0], g[1], g[2]), p);

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "quaternia/algebra/vecmath.h"
 #include "quaternia/fractal/distance.h"
@@ -69,6 +71,12 @@ class Fractal {
     // image in the algebra lies within radius / Slice::stepScale() of the segment's image in
     // every component (render/proven_cones.h proves the cones of blocks of pixels this way).
     bool excludesTube(const Ray& ray, double t0, double t1, double radius) const;
+    // The part of the formula that no proof can take (JuliaSet::unprovablePart), or nothing.
+    std::optional<std::string> unprovablePart() const { return set_->unprovablePart(); }
+    // True where the point p (world units) is proven in K_N: the box about its image that
+    // excludesTube's rounding allowance gives, iterated in interval arithmetic, stays in the
+    // ball (JuliaSet::includesBox). False proves nothing.
+    bool includesPoint(const Point3d& p) const;
     // Unit outward normal from the analytic Jacobian (one pass, docs/methods.md, Normals).
     Vector3d normal(const Point3d& p) const;
     // Unit normal from central differences of the potential ln|z_M|, step h: the simple

@@ -174,6 +174,16 @@ bool HypercomplexJuliaSet::excludesSegment(const Hypercomplex& from, const Hyper
                              segmentBetween(from, to, thickness, d), maxIterations_, bailout_);
 }
 
+std::optional<std::string> HypercomplexJuliaSet::unprovablePart() const {
+    return withoutIntervalExtension(formula_.program());
+}
+
+bool HypercomplexJuliaSet::includesBox(const Hypercomplex& centre, double radius) const {
+    if (!intervalExtension_) return false;
+    return boxAboutStaysInBall(formula_.program(), MultiplicationTable::of(formula_.algebra()),
+                               centre, radius, maxIterations_, bailout_);
+}
+
 bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {
     const double bailoutSquared = bailout_ * bailout_;
     if (rules_->escape == EscapeRule::kDuplexComponents && !formula_.transcendental()) {

@@ -11,6 +11,8 @@
 #pragma once
 
 #include <array>
+#include <optional>
+#include <string>
 
 #include "quaternia/algebra/hypercomplex.h"
 #include "quaternia/fractal/distance_estimate.h"
@@ -44,17 +46,23 @@ class JuliaSet {
     virtual std::array<double, 3> potentialGradient(
         const Hypercomplex& z0, const std::array<Hypercomplex, 3>& tangents) const = 0;
 
-    // Whether excludesSegment can prove anything: the formula has an interval extension
-    // (interval/interval_element.h). The sets marched by fixed steps then cross empty space by
-    // segments (render/march.h, firstSampleInside).
+    // Whether the fixed-step marcher crosses empty space by excludesSegment (render/march.h,
+    // firstSampleInside): the sets marched by fixed steps whose formula has an interval
+    // extension (interval/interval_element.h). The sets marched by their estimate answer false,
+    // though their proofs below work as well (the certificates use them).
     virtual bool provesEmptySpace() const { return false; }
+    // The part of the formula with no interval extension, named for a one-line refusal ("the
+    // function log"); nothing where excludesSegment and includesBox can prove.
+    virtual std::optional<std::string> unprovablePart() const = 0;
     // True where no point within `thickness` (in every component) of the segment from `from` to
     // `to` (points of the algebra) belongs to K_N, proven by iterating the segment in affine
     // arithmetic (interval/segment_form.h); false proves nothing.
-    virtual bool excludesSegment(const Hypercomplex& /*from*/, const Hypercomplex& /*to*/,
-                                 double /*thickness*/) const {
-        return false;
-    }
+    virtual bool excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
+                                 double thickness) const = 0;
+    // True where every point within `radius` (in every component) of `centre` belongs to K_N,
+    // proven by iterating the box in interval arithmetic (interval/interval_element.h,
+    // boxStaysInBall); false proves nothing.
+    virtual bool includesBox(const Hypercomplex& centre, double radius) const = 0;
 
     virtual int maxIterations() const = 0;
     // Membership radius: K_N lies in the ball of this radius.

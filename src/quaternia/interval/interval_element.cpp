@@ -193,4 +193,39 @@ bool boxLeavesBall(const FormulaProgram& program, const MultiplicationTable& tab
                                                      registers);
 }
 
+double upperNormSquared(const IntervalElement& a, int dimension) {
+    double sum = 0;
+    for (std::size_t i = 0; i < std::size_t(dimension); ++i) {
+        const double m = std::max(std::fabs(a[i].lo), std::fabs(a[i].hi));
+        // NaN bounds prove nothing: the sum is made infinite.
+        if (!(a[i].lo <= a[i].hi)) return HUGE_VAL;
+        sum = roundedUp(sum + roundedUp(m * m));
+    }
+    return std::isfinite(sum) ? sum : HUGE_VAL;
+}
+
+bool boxStaysInBall(const FormulaProgram& program, const MultiplicationTable& table,
+                    const IntervalElement& box, int maxIterations, double bailout,
+                    std::vector<IntervalElement>& registers) {
+    const int d = table.dimension();
+    // bailout^2 rounded down: the bound must lie below the exact square.
+    const double ballSquared = roundedDown(bailout * bailout);
+    IntervalElement z = box;
+    for (int n = 0;; ++n) {
+        if (!(upperNormSquared(z, d) <= ballSquared)) return false;
+        if (n + 1 >= maxIterations) return true;
+        z = evaluateOnBox(program, table, z, registers);
+    }
+}
+
+bool boxAboutStaysInBall(const FormulaProgram& program, const MultiplicationTable& table,
+                         const Hypercomplex& centre, double radius, int maxIterations,
+                         double bailout) {
+    thread_local std::vector<IntervalElement> registers;
+    IntervalElement box;
+    for (std::size_t i = 0; i < std::size_t(table.dimension()); ++i)
+        box[i] = {roundedDown(centre[i] - radius), roundedUp(centre[i] + radius)};
+    return boxStaysInBall(program, table, box, maxIterations, bailout, registers);
+}
+
 }  // namespace quaternia

@@ -53,4 +53,20 @@ bool boxLeavesBall(const FormulaProgram& program, const MultiplicationTable& tab
                    const IntervalElement& box, int maxIterations, double bailout,
                    std::vector<IntervalElement>& registers);
 
+// An upper bound of |a|^2 over the box (infinity where a bound is not finite).
+double upperNormSquared(const IntervalElement& a, int dimension);
+// Whether every point of the box belongs to K_N of p with this bailout: every iterate z_n,
+// n < maxIterations, lies wholly inside the ball |z| <= bailout for every z_0 in the box (the
+// same iterates as boxLeavesBall). False proves nothing. For a box about a single point (the
+// rounding of where it was computed), the proof that the point is in K_N (render/
+// pixel_certificate.h's certain hits).
+bool boxStaysInBall(const FormulaProgram& program, const MultiplicationTable& table,
+                    const IntervalElement& box, int maxIterations, double bailout,
+                    std::vector<IntervalElement>& registers);
+// boxStaysInBall for the box of every element within `radius` of `centre` in each of the
+// table's components (thread-local scratch).
+bool boxAboutStaysInBall(const FormulaProgram& program, const MultiplicationTable& table,
+                         const Hypercomplex& centre, double radius, int maxIterations,
+                         double bailout);
+
 }  // namespace quaternia
