@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "quaternia/image/png_writer.h"
 #include "quaternia/render/march.h"
@@ -25,6 +26,10 @@ constexpr double kUnitFootprints = 0.25;
 // Samples of the central ray tried for a point in K_N past the proven part, kUnitFootprints
 // apart: the surface lies within a few footprints of where the tube stops being provable.
 constexpr int kHitSamples = 256;
+// Segments of the central ray tried for the near end of a hit's depth interval.
+constexpr int kNearTries = 4;
+// Halvings of a pixel's footprint square where its cone is not proven whole: 4 and 16 cones.
+constexpr int kFootprintSplits = 2;
 
 float roundedDownFloat(double x) {
     const float f = float(x);
@@ -35,13 +40,19 @@ float roundedUpFloat(double x) {
     return double(f) >= x ? f : std::nextafter(f, std::numeric_limits<float>::infinity());
 }
 
+// A square of the image, [x0, x0 + size)^2 in pixel units, and the cone of the rays through it.
+struct Square {
+    double x0, y0, size;
+};
+
 class Certifier {
   public:
     Certifier(const Fractal& fractal, const Camera& camera, double epsilon)
         : fractal_(fractal),
           camera_(camera),
-          // The footprint cone's radius per unit distance, past the directions' rounding.
-          footprintSlope_(std::max(1.0, 2 * epsilon) * camera.pixelFootprint(1) * (1 + 1e-9)),
+          // The footprint square's side (header comment): its inscribed disc holds the points
+          // within 2 epsilon footprints of the central ray.
+          footprint_(std::max(1.0, 4 * epsilon)),
           unit_(kUnitFootprints * camera.pixelFootprint(std::max(length(camera.position()), 1e-3))),
           // The set's ball, past the rounding of where rays meet it.
           ball_(fractal.boundingRadius() * (1 + 1e-9) + 1e-12) {}
@@ -53,22 +64,32 @@ class Certifier {
     }
 
   private:
-    // The largest chord between the central direction of the square [x0, x0 + size)^2 and a
-    // corner's: the cone of rays through the square (proven_cones.h).
-    double coneSlope(const Ray& centre, int x0, int y0, int size) const {
-        double rho = 0;
-        for (int corner = 0; corner < 4; ++corner) {
-            const Ray edge =
-                camera_.generateRay(x0 + (corner & 1) * size, y0 + (corner >> 1) * size);
-            rho = std::max(rho, length(edge.direction - centre.direction));
-        }
-        return rho * (1 + 1e-9) + 1e-15;
+    // The square of the footprints of the pixels [x0, x0 + size)^2.
+    Square footprints(int x0, int y0, int size) const {
+        const double margin = 0.5 * (footprint_ - 1);
+        return {x0 - margin, y0 - margin, size + 2 * margin};
     }
 
-    // Proves the tube of radius slope t about `ray` outside K_N by runs from `t`, until `tFar`
-    // or a run shorter than `shortest` units fails; returns how far it got.
+    // The cone of a square's rays about its central ray (proven_cones.h): the largest chord
+    // between the central direction and a corner's, per unit distance, past the directions'
+    // rounding. Zero where the cone is not in front of the image plane: the largest angle lies
+    // at a corner only while the centre's angle to the view axis plus the cone's is below 90
+    // degrees, which fails only near a field of view of 180 degrees; such a cone proves nothing.
+    double coneSlope(const Ray& centre, const Square& square) const {
+        double rho = 0;
+        for (int corner = 0; corner < 4; ++corner) {
+            const Ray edge = camera_.generateRay(square.x0 + (corner & 1) * square.size,
+                                                 square.y0 + (corner >> 1) * square.size);
+            rho = std::max(rho, length(edge.direction - centre.direction));
+        }
+        rho = rho * (1 + 1e-9) + 1e-15;
+        return dot(centre.direction, camera_.forward()) > rho ? rho : 0;
+    }
+
+    // Proves the cone of `slope` about `ray` outside K_N by tubes, runs from `t` on, until
+    // `tFar` or a run shorter than `shortest` units fails; returns how far it got.
     double clearTube(const Ray& ray, double t, double tFar, double slope, int64_t shortest,
-                     int64_t& span, int64_t& proofs) const {
+                     int64_t span, int64_t& proofs) const {
         ProofRuns runs{span};
         while (t < tFar) {
             const double end = std::min(t + double(runs.span) * unit_, tFar);
@@ -81,34 +102,31 @@ class Certifier {
                 if (runs.span < shortest) break;
             }
         }
-        span = std::max<int64_t>(runs.span, 1);
         return t;
+    }
+
+    // Where the cone of a square's rays about `centre` meets the set's ball (nothing where it
+    // does not).
+    std::optional<RayInterval> ballInterval(const Ray& centre, double slope) const {
+        const double farthest = length(centre.origin) + ball_;
+        return intersectSphere(centre, ball_ + slope * farthest);
     }
 
     void certifyBlock(int x0, int y0, int size, double from, const Tile& tile,
                       PixelCertificate& out, int64_t& proofs) const {
-        const Ray centre = camera_.generateRay(x0 + 0.5 * size, y0 + 0.5 * size);
-        const double rho = coneSlope(centre, x0, y0, size);
-        // Every pixel's footprint cone lies within this one (its central ray within rho t,
-        // its points within footprintSlope t of that).
-        const double slope = size == 1 ? std::max(rho, footprintSlope_) : rho + footprintSlope_;
-        // The largest angle at a corner needs the cone in front of the image plane
-        // (proven_cones.h); near a field of view of 180 degrees it is not, and the block
-        // splits without a cone (a pixel proves no miss).
-        const bool coneHolds = dot(centre.direction, camera_.forward()) > slope;
-        const double farthest = length(centre.origin) + ball_;
-        const auto interval = intersectSphere(centre, ball_ + slope * farthest);
-        double t = interval ? std::max(from, interval->tNear) : 0;
-        const double tFar = interval ? interval->tFar : 0;
-        int64_t span = size == 1 ? kSpanAfterCone : kFirstSpan;
-        if (coneHolds)
-            t = clearTube(centre, t, tFar, slope, size == 1 ? 1 : kShortestBlockRun, span, proofs);
-        const bool missed = coneHolds && !(t < tFar);
         if (size == 1) {
-            settlePixel(x0, y0, centre, missed, coneHolds ? t : from, tFar, span, out, proofs);
+            settlePixel(x0, y0, from, out, proofs);
             return;
         }
-        if (missed) {
+        const Square square = footprints(x0, y0, size);
+        const Ray centre = camera_.generateRay(square.x0 + 0.5 * square.size,
+                                               square.y0 + 0.5 * square.size);
+        const double slope = coneSlope(centre, square);
+        const auto interval = ballInterval(centre, slope);
+        double t = interval ? std::max(from, interval->tNear) : from;
+        const double tFar = interval ? interval->tFar : 0;
+        if (slope > 0) t = clearTube(centre, t, tFar, slope, kShortestBlockRun, kFirstSpan, proofs);
+        if (slope > 0 && !(t < tFar)) {
             for (int py = std::max(y0, tile.y0); py < std::min(y0 + size, tile.y1); ++py)
                 for (int px = std::max(x0, tile.x0); px < std::min(x0 + size, tile.x1); ++px)
                     record(px, py, PixelClass::kMissed, 0, 0, out);
@@ -118,31 +136,85 @@ class Certifier {
         for (int y = y0; y < y0 + size; y += half)
             for (int x = x0; x < x0 + size; x += half)
                 if (x < tile.x1 && x + half > tile.x0 && y < tile.y1 && y + half > tile.y0)
-                    certifyBlock(x, y, half, coneHolds ? t : from, tile, out, proofs);
+                    certifyBlock(x, y, half, slope > 0 ? t : from, tile, out, proofs);
     }
 
-    // A pixel whose tube is proven up to `until`: missed, or a point of its central ray proven
-    // in K_N past the part of the ray proven outside, or undecided.
-    void settlePixel(int px, int py, const Ray& ray, bool missed, double until, double tFar,
-                     int64_t span, PixelCertificate& out, int64_t& proofs) const {
-        if (missed) {
+    // Whether every ray of the square is proven outside K_N from `from` to where its cone
+    // leaves the ball: by the square's own cone, and where that stops short, by its quarters'
+    // (down to `splits` halvings: a tube a quarter as wide is proven much nearer the set).
+    bool clearSquare(const Square& square, double from, int splits, int64_t& proofs) const {
+        const Ray centre = camera_.generateRay(square.x0 + 0.5 * square.size,
+                                               square.y0 + 0.5 * square.size);
+        const double slope = coneSlope(centre, square);
+        if (!(slope > 0)) return false;
+        const auto interval = ballInterval(centre, slope);
+        if (!interval) return true;
+        const double t = clearTube(centre, std::max(from, interval->tNear), interval->tFar,
+                                   slope, 1, kSpanAfterCone, proofs);
+        if (!(t < interval->tFar)) return true;
+        if (splits == 0) return false;
+        const double half = 0.5 * square.size;
+        for (int quarter = 0; quarter < 4; ++quarter)
+            if (!clearSquare({square.x0 + (quarter & 1) * half, square.y0 + (quarter >> 1) * half,
+                              half},
+                             t, splits - 1, proofs))
+                return false;
+        return true;
+    }
+
+    // A pixel whose rays are proven outside K_N up to `from`. A hit is looked for first along
+    // the central ray (it needs no tube near the surface, where tubes are dearest); then the
+    // miss is proven by the footprint's cone; where that stops short (at a part of the set
+    // that the central ray may pass by) the ray alone is proven on and looked along again.
+    void settlePixel(int px, int py, double from, PixelCertificate& out, int64_t& proofs) const {
+        const Ray ray = camera_.generateRay(px + 0.5, py + 0.5);
+        const auto interval = intersectSphere(ray, ball_);
+        const double start = interval ? std::max(from, interval->tNear) : from;
+        if (interval && findHit(px, py, ray, start, interval->tFar, out, proofs)) return;
+        if (clearSquare(footprints(px, py, 1), from, kFootprintSplits, proofs)) {
             record(px, py, PixelClass::kMissed, 0, 0, out);
             return;
         }
-        // The central ray alone is provable nearer the surface than its tube.
-        const double nearest = clearTube(ray, until, tFar, 0, 1, span, proofs);
+        if (interval) {
+            const double alone =
+                clearTube(ray, start, interval->tFar, 0, 1, kSpanAfterCone, proofs);
+            if (alone > start && findHit(px, py, ray, alone, interval->tFar, out, proofs)) return;
+        }
+        record(px, py, PixelClass::kUndecided, 0, 0, out);
+    }
+
+    // The first sample of the central ray in K_N (floating point) from `from` on, whose box of
+    // rounding is then proven in K_N: recorded as a hit, with the depth interval's near end.
+    bool findHit(int px, int py, const Ray& ray, double from, double tFar, PixelCertificate& out,
+                 int64_t& proofs) const {
         for (int k = 0; k < kHitSamples; ++k) {
-            const double t = nearest + k * unit_;
+            const double t = from + k * unit_;
             if (t > tFar) break;
             const Point3d p = ray.at(t);
             if (!fractal_.contains(p)) continue;
             ++proofs;
-            if (fractal_.includesPoint(p)) {
-                record(px, py, PixelClass::kHit, nearest, t, out);
-                return;
+            if (!fractal_.includesPoint(p)) continue;
+            record(px, py, PixelClass::kHit, nearEnd(ray, from, t, proofs), t, out);
+            return true;
+        }
+        return false;
+    }
+
+    // The near end of a hit's depth interval: the central ray is proven outside K_N up to
+    // `from`, and alone it is provable nearer the surface than its tube: a few segments towards
+    // the hit at t, the longest first.
+    double nearEnd(const Ray& ray, double from, double t, int64_t& proofs) const {
+        double nearest = from, end = t - unit_;
+        for (int tries = 0; tries < kNearTries && end > nearest; ++tries) {
+            ++proofs;
+            if (fractal_.excludesSegment(ray, nearest, end)) {
+                nearest = end;
+                end = 0.5 * (nearest + t);
+            } else {
+                end = 0.5 * (nearest + end);
             }
         }
-        record(px, py, PixelClass::kUndecided, 0, 0, out);
+        return nearest;
     }
 
     static void record(int px, int py, PixelClass c, double nearest, double farthest,
@@ -157,7 +229,7 @@ class Certifier {
 
     const Fractal& fractal_;
     const Camera& camera_;
-    double footprintSlope_;
+    double footprint_;
     double unit_;
     double ball_;
 };
