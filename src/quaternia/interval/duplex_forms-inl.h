@@ -103,7 +103,13 @@ struct DuplexArithmetic : FixedArithmetic<4, S> {
         const double ball = duplexBall(bailout);
         if (Base::outside(z, d, ball)) return true;
         const SegmentForm whole = Base::widened(z);
+        const std::array<double, 4> m = Base::magnitudes(z);
         for (std::size_t p = 0; p < 4; p += 2) {
+            // Where even the pair's farthest corner lies inside, it proves nothing.
+            double farthest = 0;
+            for (std::size_t k = p; k < p + 2; ++k)
+                farthest += (m[k] + z.radius[k]) * (m[k] + z.radius[k]);
+            if (!(farthest >= 0.99 * ball * ball)) continue;
             SegmentForm pair;
             for (std::size_t k = 0; k < 2; ++k) {
                 pair.centre[k] = whole.centre[p + k];
