@@ -43,6 +43,7 @@ __all__ = [
     "Report",
     "render",
     "render_passes",
+    "certify",
     "plane",
     "contains",
     "distance",
@@ -143,6 +144,27 @@ def render_passes(
     )
     passes["image"] = Image(passes["image"])
     return passes
+
+
+def certify(
+    scene: Scene,
+    width: Optional[int] = None,
+    height: Optional[int] = None,
+    threads: Optional[int] = None,
+    *,
+    progress: Progress = None,
+    memory_budget: Optional[str] = None,
+) -> dict:
+    """What is proven about the scene's picture, as `quaternia render --certify` writes it
+    (docs/certificates.md): "classes" (h, w) uint8 (0 the pixel's footprint certainly misses
+    K_N, 255 its central ray certainly meets it, 128 undecided), "nearest" and "farthest"
+    (h, w) float32 (for certain hits, the distances between which the central ray first meets
+    K_N; 1e10 elsewhere), and the counts "missed", "hit", "undecided", "undecided_fraction",
+    "proofs" and "seconds". A formula part with no interval extension, or a thin lens, raises
+    ValueError naming the key."""
+    return _quaternia.certify(
+        scene, width, height, threads, progress=progress, memory_budget=memory_budget
+    )
 
 
 class Plane(NamedTuple):

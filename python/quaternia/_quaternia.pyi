@@ -40,6 +40,9 @@ def render_passes(scene: Scene, width: Optional[int] = None, height: Optional[in
                   samples: Optional[int] = None, threads: Optional[int] = None, *,
                   progress: Progress = None,
                   memory_budget: Optional[str] = None) -> dict[str, np.ndarray]: ...
+def certify(scene: Scene, width: Optional[int] = None, height: Optional[int] = None,
+            threads: Optional[int] = None, *, progress: Progress = None,
+            memory_budget: Optional[str] = None) -> dict[str, Any]: ...
 def plane(scene: Scene, kind: Optional[str] = None, width: Optional[int] = None,
           height: Optional[int] = None, samples: Optional[int] = None,
           threads: Optional[int] = None, *, progress: Progress = None,

@@ -142,3 +142,23 @@ def test_image_shows_itself_and_saves(tmp_path, small_scene):
     image.save(str(path))
     assert path.read_bytes() == data
     assert [p.name for p in tmp_path.iterdir()] == ["out.png"]
+
+
+def test_certify_agrees_with_the_render_and_refuses_what_it_cannot_prove():
+    scene = quaternia.Scene()
+    scene["render.samples"] = 1
+    certificate = quaternia.certify(scene, 64, 36)
+    classes = np.asarray(certificate["classes"])
+    assert classes.shape == (36, 64) and classes.dtype == np.uint8
+    assert set(np.unique(classes)) <= {0, 128, 255}
+    assert certificate["missed"] + certificate["hit"] + certificate["undecided"] == 64 * 36
+    assert certificate["hit"] == int(np.sum(classes == 255)) > 0
+    # No pixel the renderer draws as the set is certainly missed.
+    drawn = np.asarray(quaternia.render_passes(scene, 64, 36)["id"]) == 1
+    assert not np.any(drawn & (classes == 0))
+    hits = classes == 255
+    assert np.all(np.asarray(certificate["nearest"])[hits] <= np.asarray(certificate["farthest"])[hits])
+    scene["fractal.algebra"] = "bicomplex"
+    scene["fractal.formula"] = "log(z) + c"
+    with pytest.raises(ValueError, match="fractal.formula: the function log"):
+        quaternia.certify(scene, 16, 9)

@@ -7,6 +7,7 @@
 #include "quaternia/image/png_writer.h"
 #include "quaternia/plane/plane_render.h"
 #include "quaternia/render/environment.h"
+#include "quaternia/render/pixel_certificate.h"
 #include "quaternia/render/render.h"
 #include "quaternia/render/render_png.h"
 #include "quaternia/util/error.h"
@@ -111,6 +112,30 @@ py::dict renderPasses(const Scene& scene, std::optional<int64_t> width,
     passes["trap"] = adoptArray<float>(std::move(result.passes.trap), {h, w});
     passes["id"] = adoptArray<uint32_t>(std::move(result.passes.object), {h, w});
     return passes;
+}
+
+py::dict certifyImage(const Scene& scene, std::optional<int64_t> width,
+                      std::optional<int64_t> height, std::optional<int> threads,
+                      const py::object& progress, const std::optional<std::string>& memoryBudget) {
+    const Scene s = renderScene(scene, width, height, std::nullopt);
+    validateCertificate(s);
+    const int workers = threadsOf(threads);
+    const uint64_t pixels = uint64_t(s.render.width) * uint64_t(s.render.height);
+    requireImageMemory(s, pixels * (1 + 2 * sizeof(float)), memoryBudget, workers);
+    PixelCertificate c = runWithoutGil(
+        workers, progress, [&](const WorkOptions& work) { return certifyPixels(s, work); });
+    const py::ssize_t w = s.render.width, h = s.render.height;
+    py::dict out;
+    out["classes"] = adoptArray<uint8_t>(std::move(c.classes), {h, w});
+    out["nearest"] = adoptArray<float>(std::move(c.nearestHit), {h, w});
+    out["farthest"] = adoptArray<float>(std::move(c.farthestHit), {h, w});
+    out["missed"] = c.counts.missed;
+    out["hit"] = c.counts.hit;
+    out["undecided"] = c.counts.undecided;
+    out["undecided_fraction"] = c.counts.undecidedFraction();
+    out["proofs"] = c.proofs;
+    out["seconds"] = c.seconds;
+    return out;
 }
 
 py::tuple planeImage(const Scene& scene, const std::optional<std::string>& kind,
@@ -229,6 +254,16 @@ image (as render), linear (h, w, 4) float32, depth (h, w) float32 (distance from
 the camera along the ray; 1e10 where nothing was hit), normal (h, w, 3) float32
 (world, unit; 0 where nothing was hit), trap (h, w) float32 (orbit trap min |z_n|),
 id (h, w) uint32 (0 nothing, 1 the set, 2 the ground).)");
+    module.def("certify", &certifyImage, py::arg("scene"), py::arg("width") = py::none(),
+               py::arg("height") = py::none(), py::arg("threads") = py::none(), py::kw_only(),
+               py::arg("progress") = py::none(), py::arg("memory_budget") = py::none(),
+               R"(The certificate of the scene's picture, as `quaternia render --certify`
+writes it (docs/certificates.md): a dict with classes (h, w) uint8 (0 the pixel's
+footprint certainly misses K_N, 255 its central ray certainly meets it, 128
+undecided), nearest and farthest (h, w) float32 (for certain hits, the distances
+between which the central ray first meets K_N; 1e10 elsewhere), and the counts
+missed, hit, undecided, undecided_fraction, proofs and seconds. A formula part
+with no interval extension, or a thin lens, raises ValueError naming the key.)");
     module.def("plane", &planeImage, py::arg("scene"), py::arg("kind") = py::none(),
                py::arg("width") = py::none(), py::arg("height") = py::none(),
                py::arg("samples") = py::none(), py::arg("threads") = py::none(), py::kw_only(),
