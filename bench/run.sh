@@ -160,6 +160,40 @@ for target in best avx2; do
   isa=$target paired "algebra-biquaternion-half-1080p-$target" \
     --set 'fractal.algebra="biquaternion"'
 done
+# Certified pictures (issue 38; the goals: a certificate at 640x360 in at most 20x the time of
+# the picture itself, undecided pixels at most 5%): each run renders the scene as it is (its
+# own samples) and certifies it (render --certify); the row's ratio is the median of the runs'
+# certificate / picture ratios, the certificate being scalar (the picture on the ISA named).
+certified() {  # name, then quaternia render arguments; isa=... as for scene
+  local name=$1; shift
+  if [ -n "${rows:-}" ] && ! [[ $name =~ $rows ]]; then return; fi
+  : > "$out/certified.jsonl"
+  for _ in $(seq "$runs"); do
+    "$binary" --isa "${isa:-best}" render --width 640 --height 360 "$@" --json \
+      --certify "$out/classes.png" -o "$out/frame.png" >> "$out/certified.jsonl"
+  done
+  python3 -c '
+import json, statistics, sys
+runs = [json.loads(line) for line in sys.stdin]
+picture = statistics.median(r["seconds"] for r in runs) * 1000
+certificate = statistics.median(r["certificate"]["seconds"] for r in runs) * 1000
+ratio = statistics.median(r["certificate"]["seconds"] / r["seconds"] for r in runs)
+r = runs[0]
+c = r["certificate"]
+print("%-32s %-10s picture %7.1f ms (%d spp, %-7s) certificate %8.1f ms %5.1fx  undecided %5.2f%% hit %5.1f%% missed %5.1f%%  (median of %d, %d threads)"
+      % (sys.argv[1], "%dx%d" % (r["width"], r["height"]), picture, r["samples"], r["engine"],
+         certificate, ratio, 100 * c["undecided_fraction"],
+         100 * c["hit"] / (r["width"] * r["height"]), 100 * c["missed"] / (r["width"] * r["height"]),
+         len(runs), r["threads"]))
+' "$name" < "$out/certified.jsonl"
+}
+for target in best avx2; do
+  isa=$target certified "certify-default-360p-$target"
+done
+for preset in studio rabbit dendrite basilica cubic two-sided bicomplex coquaternion \
+  biquaternion octonion; do
+  certified "certify-$preset-360p" --preset "$preset"
+done
 [ -n "${rows:-}" ] && return 0
 # Films (`quaternia animate`): the hidden-turn preset at 1 sample on 2 threads, frames per second
 # end to end (every PNG written, the process start left out) and of the render loop alone (the

@@ -35,6 +35,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/fractal/octonion_fold.cpp
   quaternia/render/camera.cpp
   quaternia/render/march.cpp
+  quaternia/render/pixel_certificate.cpp
   quaternia/render/proven_cones.cpp
   quaternia/render/shade.cpp
   quaternia/render/point_queries.cpp

@@ -13,7 +13,9 @@ namespace quaternia {
 
 struct RenderCommandOptions : SceneCommandOptions {
     RenderCommandOptions() { output = "quaternia.png"; }
-    std::string depthOutput;  // empty: no depth pass
+    std::string depthOutput;     // empty: no depth pass
+    std::string certifyOutput;   // --certify: the classes PNG (pixel_certificate.h); empty: none
+    bool tintUndecided = false;  // --tint-undecided: undecided pixels tinted over the picture
 };
 
 // The summary of a render on stdout: one line, or with --json an object, `extra`'s fields added.

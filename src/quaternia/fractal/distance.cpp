@@ -120,6 +120,12 @@ bool QuaternionJuliaSet::excludesSegment(const Hypercomplex& from, const Hyperco
                              segmentBetween(from, to, thickness, 4), maxIterations_, bailout_);
 }
 
+bool QuaternionJuliaSet::excludesTube(const TubeForm& tube) const {
+    if (!intervalExtension_) return false;
+    return tubeLeavesBall(*program_, MultiplicationTable::of(Algebra::kQuaternion), tube,
+                          maxIterations_, bailout_);
+}
+
 bool QuaternionJuliaSet::includesBox(const Hypercomplex& centre, double radius) const {
     if (!intervalExtension_) return false;
     return boxAboutStaysInBall(*program_, MultiplicationTable::of(Algebra::kQuaternion), centre,

@@ -88,6 +88,7 @@ class QuaternionJuliaSet final : public JuliaSet {
     std::optional<std::string> unprovablePart() const override;
     bool excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
                          double thickness) const override;
+    bool excludesTube(const TubeForm& tube) const override;
     bool includesBox(const Hypercomplex& centre, double radius) const override;
 
     const Polynomial& polynomial() const { return polynomial_; }

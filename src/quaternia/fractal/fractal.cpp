@@ -98,12 +98,31 @@ DistanceEstimate Fractal::estimate(const Point3d& p) const {
 }
 
 bool Fractal::excludesTube(const Ray& ray, double t0, double t1, double radius) const {
-    const Hypercomplex a = slice_.fromWorld(ray.at(t0)), b = slice_.fromWorld(ray.at(t1));
+    const double extend = radius > 0 ? radius : 0;
+    const Hypercomplex a = slice_.fromWorld(ray.at(t0 - extend)),
+                       b = slice_.fromWorld(ray.at(t1 + extend));
     double largest = 0;
     for (size_t i = 0; i < a.size(); ++i)
         largest = std::max({largest, std::fabs(a[i]), std::fabs(b[i])});
-    return set_->excludesSegment(a, b,
-                                 radius / slice_.stepScale() * (1 + 1e-12) + 1e-12 * (1 + largest));
+    const double rounding = 1e-12 * (1 + largest);
+    if (!(radius > 0)) return set_->excludesSegment(a, b, rounding);
+    // Two unit directions across the ray: the square of half-width `radius` they span holds
+    // the tube's disc, and the segment lengthened by `radius` at each end its caps.
+    const Vector3d& d = ray.direction;
+    const Vector3d axis = std::fabs(d[0]) < 0.5 ? Vector3d(1, 0, 0) : Vector3d(0, 1, 0);
+    const Vector3d u = normalize(cross(d, axis)), v = cross(d, u);
+    const auto& tangents = slice_.tangents();
+    Hypercomplex across1{}, across2{};
+    for (size_t i = 0; i < across1.size(); ++i) {
+        across1[i] =
+            radius * (u[0] * tangents[0][i] + u[1] * tangents[1][i] + u[2] * tangents[2][i]);
+        across2[i] =
+            radius * (v[0] * tangents[0][i] + v[1] * tangents[1][i] + v[2] * tangents[2][i]);
+    }
+    // The across directions' rounding (a few ulps of radius times the tangents) lies far below
+    // the allowance for the slice's.
+    return set_->excludesTube(
+        tubeAbout(a, b, across1, across2, rounding, int(kMaxAlgebraDimension)));
 }
 
 bool Fractal::includesPoint(const Point3d& p) const {

@@ -178,6 +178,12 @@ std::optional<std::string> HypercomplexJuliaSet::unprovablePart() const {
     return withoutIntervalExtension(formula_.program());
 }
 
+bool HypercomplexJuliaSet::excludesTube(const TubeForm& tube) const {
+    if (!intervalExtension_) return false;
+    return tubeLeavesBall(formula_.program(), MultiplicationTable::of(formula_.algebra()), tube,
+                          maxIterations_, bailout_);
+}
+
 bool HypercomplexJuliaSet::includesBox(const Hypercomplex& centre, double radius) const {
     if (!intervalExtension_) return false;
     return boxAboutStaysInBall(formula_.program(), MultiplicationTable::of(formula_.algebra()),

@@ -16,6 +16,7 @@
 
 #include "quaternia/algebra/hypercomplex.h"
 #include "quaternia/fractal/distance_estimate.h"
+#include "quaternia/interval/segment_form.h"
 
 namespace quaternia {
 
@@ -59,6 +60,8 @@ class JuliaSet {
     // arithmetic (interval/segment_form.h); false proves nothing.
     virtual bool excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
                                  double thickness) const = 0;
+    // The same for every point of a tube (interval/segment_form.h, tubeLeavesBall).
+    virtual bool excludesTube(const TubeForm& tube) const = 0;
     // True where every point within `radius` (in every component) of `centre` belongs to K_N,
     // proven by iterating the box in interval arithmetic (interval/interval_element.h,
     // boxStaysInBall); false proves nothing.

@@ -56,4 +56,27 @@ SegmentForm evaluateOnSegment(const FormulaProgram& program, const Multiplicatio
 bool segmentLeavesBall(const FormulaProgram& program, const MultiplicationTable& table,
                        const SegmentForm& form, int maxIterations, double bailout);
 
+// A tube: centre + slopes[0] e_0 + slopes[1] e_1 + slopes[2] e_2 + r, each e_s in [-1, 1] and
+// |r_k| <= radius_k, the segment from centre - slopes[0] to centre + slopes[0] swept over the
+// parallelogram of slopes[1] and slopes[2]. A pixel's cone through the 3D slice is one such
+// form (the slice is affine): its cross-section's two directions as symbols of their own keep
+// their first-order dependence exact through every iterate, where a box remainder of the same
+// size would grow by the absolute values of the Jacobian (up to twice as fast per iterate in
+// the quaternions), so tubes about rays are proven almost as near the set as the rays alone.
+// Products as for segments, each e_s^2 = 1/2 + [-1/2, 1/2] and each e_s e_t, s != t, in
+// [-1, 1] bounded in the radius; functions carry the first symbol and bound the others.
+struct TubeForm {
+    static constexpr int kSymbols = 3;
+    Hypercomplex centre{};
+    std::array<Hypercomplex, kSymbols> slopes{};
+    std::array<double, kMaxAlgebraDimension> radius{};  // each >= 0
+};
+// The segment from `from` to `to` swept over the parallelogram of +-across1 and +-across2,
+// thickened by `thickness` in every component, in the first `dimension` components.
+TubeForm tubeAbout(const Hypercomplex& from, const Hypercomplex& to, const Hypercomplex& across1,
+                   const Hypercomplex& across2, double thickness, int dimension);
+// segmentLeavesBall for a tube.
+bool tubeLeavesBall(const FormulaProgram& program, const MultiplicationTable& table,
+                    const TubeForm& form, int maxIterations, double bailout);
+
 }  // namespace quaternia

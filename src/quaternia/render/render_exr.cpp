@@ -4,7 +4,8 @@
 
 namespace quaternia {
 
-std::vector<uint8_t> encodeRenderExr(const RenderPasses& passes) {
+std::vector<uint8_t> encodeRenderExr(const RenderPasses& passes,
+                                     const PixelCertificate* certificate) {
     const size_t count = size_t(passes.width) * size_t(passes.height);
     ExrImage image;
     image.width = passes.width;
@@ -29,6 +30,14 @@ std::vector<uint8_t> encodeRenderExr(const RenderPasses& passes) {
     }
     channel("trap") = passes.trap;
     image.channels.push_back(ExrChannel{"id", {}, passes.object});
+    if (certificate) {
+        image.channels.push_back(ExrChannel{
+            "certified.class",
+            {},
+            std::vector<uint32_t>(certificate->classes.begin(), certificate->classes.end())});
+        channel("certified.near") = certificate->nearestHit;
+        channel("certified.far") = certificate->farthestHit;
+    }
     return encodeExr(image);
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "quaternia/render/pixel_certificate.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/scene.h"
 
@@ -14,7 +15,11 @@ namespace quaternia {
 // (linear colour times alpha), Z (distance from the camera along the ray,
 // RenderPasses::kNoHitDistance where nothing was hit), id (unsigned: 1 the set, 0 nothing) and
 // trap (the orbit trap min |z_n|).
-std::vector<uint8_t> encodeRenderExr(const RenderPasses& passes);
+// With a certificate (pixel_certificate.h) of the same size, also certified.class (unsigned:
+// 0 missed, 128 undecided, 255 hit), certified.near and certified.far (the depth interval of
+// certain hits, PixelCertificate::kNoDepth elsewhere).
+std::vector<uint8_t> encodeRenderExr(const RenderPasses& passes,
+                                     const PixelCertificate* certificate = nullptr);
 
 // An upper bound of the memory a render to EXR takes beyond a small fixed amount: the float
 // image, the passes, their channels and the encoded file.
