@@ -55,11 +55,12 @@ void printSummary(const PlaneCommandOptions& options, const Scene& scene, const 
             image.threads, image.threads == 1 ? "" : "s");
         if (certificate)
             std::fprintf(stream,
-                         "quaternia: wrote %s: %lld pixels certainly missed, %lld certainly hit, "
-                         "%lld undecided (%.2f%%) in %.2f s\n",
-                         options.certify.c_str(), (long long)certificate->missed,
-                         (long long)certificate->hit, (long long)certificate->undecided,
-                         100 * certificate->undecidedFraction(), certificate->seconds);
+                         "quaternia: certified %s in %.2f s: %lld missed, %lld hit, %lld "
+                         "undecided (%.2f%%)\n",
+                         options.certify.c_str(), certificate->seconds,
+                         (long long)certificate->counts.missed, (long long)certificate->counts.hit,
+                         (long long)certificate->counts.undecided,
+                         100 * certificate->counts.undecidedFraction());
         if (!note.empty()) std::fprintf(stream, "note: %s\n", note.c_str());
         return;
     }
@@ -79,10 +80,10 @@ void printSummary(const PlaneCommandOptions& options, const Scene& scene, const 
     json["note"] = note.empty() ? Json() : Json(note);
     if (certificate) {
         Json classes;
-        classes["missed"] = certificate->missed;
-        classes["hit"] = certificate->hit;
-        classes["undecided"] = certificate->undecided;
-        classes["undecided_fraction"] = certificate->undecidedFraction();
+        classes["missed"] = certificate->counts.missed;
+        classes["hit"] = certificate->counts.hit;
+        classes["undecided"] = certificate->counts.undecided;
+        classes["undecided_fraction"] = certificate->counts.undecidedFraction();
         classes["seconds"] = certificate->seconds;
         classes["output"] = options.certify;
         json["certificate"] = classes;

@@ -279,7 +279,7 @@ PlaneCertificate classifyPixels(const Prover& prover, const PlaneView& view,
     result.width = view.pixelWidth;
     result.height = view.pixelHeight;
     result.classes.assign(size_t(view.pixelWidth) * size_t(view.pixelHeight),
-                          PlaneCertificate::kUndecided);
+                          uint8_t(PixelClass::kUndecided));
     const ParallelOptions parallel =
         imageParallelOptions(options, view.pixelWidth, view.pixelHeight);
     const auto start = std::chrono::steady_clock::now();
@@ -290,19 +290,19 @@ PlaneCertificate classifyPixels(const Prover& prover, const PlaneView& view,
                     uint8_t& cell =
                         result.classes[size_t(py) * size_t(view.pixelWidth) + size_t(px)];
                     if (prover.hits(px, py))
-                        cell = PlaneCertificate::kHit;
+                        cell = uint8_t(PixelClass::kHit);
                     else if (missesSquare(prover, Square{double(px), double(py), 1.0},
                                           kSubdivisions))
-                        cell = PlaneCertificate::kMissed;
+                        cell = uint8_t(PixelClass::kMissed);
                 }
         });
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.threads = parallel.threads;
     for (uint8_t c : result.classes) {
-        result.missed += c == PlaneCertificate::kMissed;
-        result.hit += c == PlaneCertificate::kHit;
-        result.undecided += c == PlaneCertificate::kUndecided;
+        result.counts.missed += PixelClass(c) == PixelClass::kMissed;
+        result.counts.hit += PixelClass(c) == PixelClass::kHit;
+        result.counts.undecided += PixelClass(c) == PixelClass::kUndecided;
     }
     return result;
 }

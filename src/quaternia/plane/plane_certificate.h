@@ -24,24 +24,23 @@
 #include <cstdint>
 #include <vector>
 
+#include "quaternia/render/pixel_certificate.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/scene.h"
 
 namespace quaternia {
 
+// The classes are render/pixel_certificate.h's PixelClass, counted as there.
 struct PlaneCertificate {
-    static constexpr uint8_t kMissed = 0, kUndecided = 128, kHit = 255;
-
     int width = 0, height = 0;
-    std::vector<uint8_t> classes;  // per pixel, row-major as the plane image's pixels
-    int64_t missed = 0, hit = 0, undecided = 0;
+    std::vector<uint8_t> classes;  // PixelClass per pixel, row-major as the plane image's pixels
+    CertificateCounts counts;
     int threads = 0;
     double seconds = 0;
     bool completed = true;  // false if cancelled (the classes are then incomplete)
 
-    double undecidedFraction() const {
-        const int64_t pixels = int64_t{width} * height;
-        return pixels > 0 ? double(undecided) / double(pixels) : 0.0;
+    PixelClass at(int x, int y) const {
+        return PixelClass(classes[size_t(y) * size_t(width) + size_t(x)]);
     }
 };
 

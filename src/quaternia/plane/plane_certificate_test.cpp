@@ -80,20 +80,19 @@ PlaneCertificate expectClassesAgreeWithIteration(const Scene& scene) {
     const PlaneImage image = renderPlane(scene);  // one sample: the pixel's centre
     EXPECT_EQ(certificate.width, view.pixelWidth);
     EXPECT_EQ(certificate.height, view.pixelHeight);
-    EXPECT_EQ(certificate.missed + certificate.hit + certificate.undecided,
+    EXPECT_EQ(certificate.counts.missed + certificate.counts.hit + certificate.counts.undecided,
               int64_t{view.pixelWidth} * view.pixelHeight);
-    EXPECT_GT(certificate.missed, 0);
-    EXPECT_GT(certificate.hit, 0);
+    EXPECT_GT(certificate.counts.missed, 0);
+    EXPECT_GT(certificate.counts.hit, 0);
     int wrong = 0;
     for (int py = 0; py < view.pixelHeight; ++py)
         for (int px = 0; px < view.pixelWidth; ++px) {
             const size_t n = size_t(py) * size_t(view.pixelWidth) + size_t(px);
-            const uint8_t c = certificate.classes[n];
+            const PixelClass c = certificate.at(px, py);
             const bool stayed = image.labels[n] == -1;
             bool right = true;
-            if (c == PlaneCertificate::kHit)
-                right = stayed && inside(view.pointAt(px + 0.5, py + 0.5));
-            if (c == PlaneCertificate::kMissed) {
+            if (c == PixelClass::kHit) right = stayed && inside(view.pointAt(px + 0.5, py + 0.5));
+            if (c == PixelClass::kMissed) {
                 right = !stayed && !inside(view.pointAt(px + 0.5, py + 0.5));
                 for (int corner = 0; corner < 4; ++corner)
                     right = right && !inside(view.pointAt(px + corner % 2, py + corner / 2));
@@ -167,7 +166,7 @@ TEST(PlaneCertificate, BasilicaIsAlmostAllDecided) {
     EXPECT_TRUE(certificate.completed);
     // Measured: 3.9% (2556 pixels), all of them outside K_N by their centre: the cells that
     // J_c passes through or comes within a sixteenth of a pixel of.
-    EXPECT_LT(certificate.undecidedFraction(), 0.05);
+    EXPECT_LT(certificate.counts.undecidedFraction(), 0.05);
 }
 
 TEST(PlaneCertificate, ClassesDoNotDependOnTheThreads) {
