@@ -14,6 +14,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/dynamics/periodic_points.cpp
   quaternia/dynamics/mandelbrot.cpp
   quaternia/plane/plane_render.cpp
+  quaternia/plane/plane_certificate.cpp
   quaternia/algebra/formula_parse.cpp
   quaternia/algebra/formula_expand.cpp
   quaternia/algebra/formula_program.cpp

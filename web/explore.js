@@ -12,6 +12,7 @@ const viewport = document.getElementById('viewport');
 const statusLine = document.getElementById('status');
 const controls = document.getElementById('controls');
 const copied = document.getElementById('copied');
+const certifyBox = document.getElementById('certify');
 
 // ?size=WxH fixes the final image size (benchmarks, tests); otherwise it fits the window.
 const fixedSize = /^(\d+)x(\d+)$/.exec(new URLSearchParams(location.search).get('size') || '');
@@ -95,9 +96,12 @@ async function requestLevel(level) {
   const list = levels();
   if (inflight) inflight.controller.abort();
   const request = (inflight = { controller: new AbortController(), level });
+  // The certificate is asked for with the final frame alone: it costs more than the render.
+  const certify = certifyBox.checked && level + 1 === list.length;
   let response, blob;
   try {
-    response = await fetch('/api/render?' + viewQuery(list[level]),
+    response = await fetch('/api/render?' + viewQuery(certify ? { ...list[level], certify }
+                                                              : list[level]),
                            { signal: request.controller.signal });
     if (response.status === 200) blob = await response.blob();
   } catch {
@@ -118,7 +122,7 @@ async function requestLevel(level) {
     return;
   }
   markInvalid(controls, null);
-  await show(blob, list[level], response.headers.get('X-Render-Ms'));
+  await show(blob, list[level], response.headers.get('X-Render-Ms'), certify && response.headers);
   if (stale) {  // a frame of a view just left: shown, now the newest view
     if (!inflight) requestLevel(0);
     return;
@@ -132,7 +136,21 @@ async function requestLevel(level) {
   setTimeout(() => myGeneration === generation && requestLevel(level + 1), wait);
 }
 
-async function show(blob, level, renderMs) {
+// The certificate's part of the status line, from the answer's headers: the undecided
+// fraction, or why the scene cannot be certified (an error, though the picture is shown).
+function certifyStatus(headers) {
+  const refusal = headers.get('X-Certify-Error');
+  if (refusal) {
+    document.body.dataset.certify = 'refused';
+    return { text: `not certified: ${headers.get('X-Certify-Key')}: ${refusal}`, error: true };
+  }
+  const undecided = +headers.get('X-Certify-Undecided');
+  document.body.dataset.certify = String(undecided);
+  return { text: `certified in ${Math.round(+headers.get('X-Certify-Ms'))} ms, ` +
+                 `${(100 * undecided).toFixed(2)}% undecided (magenta)`, error: false };
+}
+
+async function show(blob, level, renderMs, certifyHeaders) {
   const url = URL.createObjectURL(blob);
   const previous = view.src;
   view.src = url;
@@ -150,6 +168,13 @@ async function show(blob, level, renderMs) {
   statusLine.className = '';
   statusLine.textContent = `${level['render.width']}x${level['render.height']}, ` +
     `${level['render.samples']} spp, ${Math.round(+renderMs)} ms`;
+  if (!certifyHeaders) {
+    delete document.body.dataset.certify;
+    return;
+  }
+  const { text, error } = certifyStatus(certifyHeaders);
+  statusLine.textContent += '; ' + text;
+  if (error) statusLine.className = 'error';
 }
 
 // ---- Orbit and zoom ---------------------------------------------------------------------------
@@ -191,6 +216,13 @@ viewport.addEventListener('wheel', (e) => {
   orbit(0, 0, Math.exp(e.deltaY * 0.001));
 }, { passive: false });
 window.addEventListener('resize', () => fixedSize || viewChanged());
+// Ticking or clearing the box asks for the final frame again, with or without the tint.
+certifyBox.addEventListener('change', () => {
+  delete document.body.dataset.certify;
+  document.body.dataset.state = 'rendering';
+  ++generation;
+  requestLevel(levels().length - 1);
+});
 
 // ---- Mandelbrot map ---------------------------------------------------------------------------
 

@@ -1,6 +1,7 @@
 // `quaternia plane` as a user meets it.
 #include "cmd/cli_fixture.h"
 #include "cmd/cli_library_results.h"
+#include "quaternia/image/png_io.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/scene_file.h"
 
@@ -44,11 +45,46 @@ TEST_F(PlaneCli, MandelbrotAndSliceWithJsonSummary) {
     testing::expectPngIsLibrarys(readFile(output()), testing::libraryPlanePng(scene));
 }
 
+TEST_F(PlaneCli, CertifyWritesTheThreeClassesAndCountsThem) {
+    const std::string classes = output("classes.png");
+    CommandResult r = run("plane --json -o " + output() + " --certify " + classes +
+                          " --width 64 --height 48 --threads 2 --set 'fractal.c=[-1, 0, 0, 0]'");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Json certificate = Json::parse(r.out)["certificate"];
+    EXPECT_EQ(certificate["output"], classes) << r.out;
+    const int64_t missed = certificate["missed"], hit = certificate["hit"],
+                  undecided = certificate["undecided"];
+    EXPECT_EQ(missed + hit + undecided, 64 * 48) << r.out;
+    EXPECT_DOUBLE_EQ(double(certificate["undecided_fraction"]), double(undecided) / (64 * 48));
+    const Image image = readPng(classes);
+    ASSERT_EQ(image.width(), 64);
+    ASSERT_EQ(image.height(), 48);
+    std::map<int, int64_t> counts;
+    for (const Rgba& p : image.pixels())
+        ++counts[int(std::lround(p.r * 255))];
+    EXPECT_EQ(counts, (std::map<int, int64_t>{{0, missed}, {128, undecided}, {255, hit}}));
+    EXPECT_GT(missed, 0);
+    EXPECT_GT(hit, 0);
+    EXPECT_GT(undecided, 0);
+    // Without --json: one more line names the file and the counts.
+    r = run("plane -o " + output() + " --certify " + classes + kSmall);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("undecided"), std::string::npos) << r.out;
+}
+
+TEST_F(PlaneCli, CertifyRefusesBasinsAndItsOwnImage) {
+    const std::string o = "plane -o " + output() + kSmall;
+    expectUserError(run(o + " --certify " + output("classes.png") + " --set plane.kind=basins"),
+                    "basins");
+    expectUserError(run(o + " --certify " + output()), "--certify");
+}
+
 TEST_F(PlaneCli, HelpListsThePlaneKeys) {
     CommandResult r = run("plane --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* key : {"plane.kind", "plane.center", "plane.width", "plane.rotation",
-                            "plane.origin", "plane.u", "plane.v", "julia-boundary", "--threads"})
+    for (const char* key :
+         {"plane.kind", "plane.center", "plane.width", "plane.rotation", "plane.origin", "plane.u",
+          "plane.v", "julia-boundary", "--threads", "--certify"})
         EXPECT_NE(r.out.find(key), std::string::npos) << key;
 }
 

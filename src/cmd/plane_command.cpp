@@ -1,15 +1,20 @@
 #include "cmd/plane_command.h"
 
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 
 #include "cmd/dynamics_input.h"
 #include "quaternia/dynamics/connectedness.h"
 #include "quaternia/image/png_io.h"
+#include "quaternia/image/png_writer.h"
+#include "quaternia/plane/plane_certificate.h"
 #include "quaternia/plane/plane_render.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/atomic_file.h"
+#include "quaternia/util/error.h"
 
 namespace quaternia {
 namespace {
@@ -31,9 +36,15 @@ std::string connectednessNote(const Scene& scene) {
            " (for z^2 + c, c is in M)";
 }
 
+// The classes as an 8-bit grey PNG: 0 certainly missed, 255 certainly hit, 128 undecided.
+std::vector<uint8_t> certificatePng(const PlaneCertificate& certificate, int threads) {
+    const PngFormat format{certificate.width, certificate.height, 8, PngColorType::Gray};
+    return writePngBytes(format, certificate.classes, threads);
+}
+
 void printSummary(const PlaneCommandOptions& options, const Scene& scene, const PlaneImage& image,
-                  const std::string& note) {
-    std::FILE* stream = summaryStream({options.output});
+                  const PlaneCertificate* certificate, const std::string& note) {
+    std::FILE* stream = summaryStream({options.output, options.certify});
     const std::string kind = std::get<std::string>(findParameter("plane.kind")->read(scene));
     if (!options.json) {
         std::fprintf(
@@ -42,6 +53,14 @@ void printSummary(const PlaneCommandOptions& options, const Scene& scene, const 
             options.output.c_str(), kind.c_str(), scene.render.width, scene.render.height,
             scene.render.samples, scene.render.samples == 1 ? "" : "s", image.seconds,
             image.threads, image.threads == 1 ? "" : "s");
+        if (certificate)
+            std::fprintf(stream,
+                         "quaternia: certified %s in %.2f s: %lld missed, %lld hit, %lld "
+                         "undecided (%.2f%%)\n",
+                         options.certify.c_str(), certificate->seconds,
+                         (long long)certificate->counts.missed, (long long)certificate->counts.hit,
+                         (long long)certificate->counts.undecided,
+                         100 * certificate->counts.undecidedFraction());
         if (!note.empty()) std::fprintf(stream, "note: %s\n", note.c_str());
         return;
     }
@@ -59,6 +78,16 @@ void printSummary(const PlaneCommandOptions& options, const Scene& scene, const 
     json["threads"] = image.threads;
     json["seconds"] = image.seconds;
     json["note"] = note.empty() ? Json() : Json(note);
+    if (certificate) {
+        Json classes;
+        classes["missed"] = certificate->counts.missed;
+        classes["hit"] = certificate->counts.hit;
+        classes["undecided"] = certificate->counts.undecided;
+        classes["undecided_fraction"] = certificate->counts.undecidedFraction();
+        classes["seconds"] = certificate->seconds;
+        classes["output"] = options.certify;
+        json["certificate"] = classes;
+    }
     std::fprintf(stream, "%s\n", jsonText(json).c_str());
 }
 
@@ -70,6 +99,10 @@ void addPlaneCommand(CLI::App& app, PlaneCommandOptions& options) {
         "Draw a 2D image: a Julia set, its boundary, the Mandelbrot set, basins of "
         "attraction or a plane through a Julia set in any algebra (plane.kind)");
     addSceneOptions(*plane, options, "Output PNG (RGB: plane images are opaque)");
+    plane->add_option("--certify", options.certify,
+                      "Also write each pixel's proven class as a grey PNG: 0 where interval "
+                      "arithmetic proves no point of the pixel in K_N, 255 where the pixel's "
+                      "centre is proven in K_N, 128 undecided (not for plane.kind = basins)");
     plane->footer(sceneHelpFooter());
 }
 
@@ -77,16 +110,41 @@ int runPlaneCommand(const PlaneCommandOptions& options) {
     Scene scene = sceneFromOptions(options);
     // Every check that can fail runs before the work, the output path included.
     validatePlaneScene(scene);
+    const bool certify = !options.certify.empty();
+    if (certify) {
+        validatePlaneCertificate(scene);
+        auto normal = [](const std::string& path) {
+            return std::filesystem::absolute(path).lexically_normal();
+        };
+        if (normal(options.certify) == normal(options.output))
+            throw UserError("--certify", "--certify names the image's own file " + options.output +
+                                             "; give the classes another one");
+    }
     const std::string note = connectednessNote(scene);
-    requireImageMemory(scene, planeMemoryBytes(scene), options, "the image");
+    const uint64_t pixels = uint64_t(scene.render.width) * uint64_t(scene.render.height);
+    const PngFormat classesFormat{scene.render.width, scene.render.height, 8, PngColorType::Gray};
+    requireImageMemory(
+        scene, planeMemoryBytes(scene) + (certify ? pixels + pngBytesBound(classesFormat) : 0),
+        options, "the image");
     AtomicFile output(options.output);
+    std::optional<AtomicFile> classesOutput;
+    if (certify) classesOutput.emplace(options.certify);
 
     PlaneImage image = runInterruptibly(
         "drawing", options, [&](const WorkOptions& work) { return renderPlane(scene, work); });
     if (!image.completed) return reportInterrupted();
+    std::optional<PlaneCertificate> certificate;
+    if (certify) {
+        certificate = runInterruptibly("certifying", options, [&](const WorkOptions& work) {
+            return certifyPlane(scene, work);
+        });
+        if (!certificate->completed) return reportInterrupted();
+    }
     output.write(encodePng(image.image, scene.render.bitDepth));
+    if (certificate) classesOutput->write(certificatePng(*certificate, options.threads));
     output.commit();
-    printSummary(options, scene, image, note);
+    if (classesOutput) classesOutput->commit();
+    printSummary(options, scene, image, certificate ? &*certificate : nullptr, note);
     return 0;
 }
 

@@ -9,6 +9,7 @@ namespace quaternia {
 
 struct PlaneCommandOptions : SceneCommandOptions {
     PlaneCommandOptions() { output = "plane.png"; }
+    std::string certify;  // --certify: the classes' grey PNG (plane_certificate.h); empty: none
 };
 
 void addPlaneCommand(CLI::App& app, PlaneCommandOptions& options);

@@ -75,7 +75,7 @@ Scene sceneFromQuery(const Scene& base, const QueryParameters& query, const Expl
             throw UserError(entry.first, entry.first + " is given more than once");
     Scene scene = base;
     for (const auto& [name, value] : query) {
-        if (name == kClientParameter) continue;
+        if (name == kClientParameter || name == kCertifyParameter) continue;
         if (name.find('=') != std::string::npos || name.empty())
             throw UserError(name, "unknown key '" + name + "'");
         applyOverride(scene, name + "=" + value);
@@ -130,6 +130,16 @@ std::string clientIdFromQuery(const QueryParameters& query) {
         throw UserError(kClientParameter, "client must be at most 64 letters, digits, '-' or '_'");
     }
     return id;
+}
+
+bool certifyFromQuery(const QueryParameters& query) {
+    for (const auto& [name, value] : query) {
+        if (name != kCertifyParameter) continue;
+        if (value == "true" || value == "1") return true;
+        if (value == "false" || value == "0") return false;
+        throw UserError(kCertifyParameter, "certify must be true or false");
+    }
+    return false;
 }
 
 std::string renderCommandForScene(const Scene& scene) {

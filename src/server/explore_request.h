@@ -34,12 +34,15 @@ using QueryParameters = std::vector<std::pair<std::string, std::string>>;
 
 // Query parameters that are not scene keys.
 inline constexpr const char* kClientParameter = "client";
+// /api/render and /api/download: "true" tints the pixels that the picture's certificate
+// (render/pixel_certificate.h) leaves undecided; "false" (or none) does not.
+inline constexpr const char* kCertifyParameter = "certify";
 
 // `base` (the default scene, or the scene file the server started with) with every query
 // parameter applied as `--set name=value` (TOML value syntax; a bare word is a string), then
 // validated. Throws UserError naming the key for an unknown key, a repeated one, a bad value or
-// a cross-field problem; "client" is skipped. animation.keys (the inline TOML array of --set) is
-// read, at most limits.maxAnimationKeys of them.
+// a cross-field problem; "client" and "certify" are skipped. animation.keys (the inline TOML array
+// of --set) is read, at most limits.maxAnimationKeys of them.
 Scene sceneFromQuery(const Scene& base, const QueryParameters& query, const ExploreLimits& limits);
 
 // validateScene, then the explorer's bounds on iterations and steps, then the formula; each
@@ -54,6 +57,10 @@ void checkMeshRequest(const Scene& scene, const ExploreLimits& limits);
 // The client id of a request: letters, digits, '-' and '_', 1 to 64 characters; "" when the
 // request names none. Throws UserError("client", ...) for anything else.
 std::string clientIdFromQuery(const QueryParameters& query);
+
+// Whether the request asks for the certificate's tint: certify=true or certify=false (also 1
+// and 0), false when it names none. Throws UserError("certify", ...) for anything else.
+bool certifyFromQuery(const QueryParameters& query);
 
 // `quaternia render --set 'key=value' ... -o quaternia.png`: every key whose value differs from
 // the default, each value in exact TOML syntax, so that the command renders the same picture.

@@ -11,6 +11,7 @@
 #include "quaternia/mesh/mesh_io.h"
 #include "quaternia/mesh/mesher.h"
 #include "quaternia/plane/plane_render.h"
+#include "quaternia/render/pixel_certificate.h"
 #include "quaternia/render/render.h"
 #include "quaternia/render/render_png.h"
 #include "quaternia/scene/animation.h"
@@ -115,17 +116,50 @@ void requireImageMemory(const ExploreServer::State& state, const Scene& scene, u
                   "lower render.width and render.height");
 }
 
+// A header value of one line of printable ASCII (a message may quote a formula).
+std::string headerText(const std::string& text) {
+    std::string out = text;
+    for (char& ch : out)
+        if (ch < 0x20 || ch > 0x7e) ch = '?';
+    return out;
+}
+
+// With `certify`, the picture's certificate (pixel_certificate.h) is made after the render, in
+// the same slot, and its undecided pixels are tinted magenta; X-Certify-Undecided gives their
+// fraction. Where validateCertificate refuses the scene, the picture is answered untinted, with
+// the refusal in X-Certify-Error and its key in X-Certify-Key.
 bool answerRender(ExploreServer::State& state, const std::string& slot, const Scene& scene,
-                  Response& response) {
-    requireImageMemory(state, scene, renderPngMemoryBytes(scene, false));
+                  Response& response, bool certify = false) {
+    if (certify) {
+        try {
+            validateCertificate(scene);
+        } catch (const UserError& refusal) {
+            certify = false;
+            response.set_header("X-Certify-Error", headerText(refusal.what()));
+            response.set_header("X-Certify-Key", headerText(refusal.key()));
+        }
+    }
+    const uint64_t pixels = uint64_t(scene.render.width) * uint64_t(scene.render.height);
+    requireImageMemory(
+        state, scene,
+        renderPngMemoryBytes(scene, false) + (certify ? pixels * (1 + 2 * sizeof(float)) : 0));
     RenderResult result;
+    PixelCertificate certificate;
     bool done = runInSlot(state, slot, response, [&](const WorkOptions& w) {
         RenderOptions options;
         static_cast<WorkOptions&>(options) = w;
         result = render(scene, options);
-        return result.completed;
+        if (!result.completed || !certify) return result.completed;
+        certificate = certifyPixels(scene, w);
+        return certificate.completed;
     });
     if (!done) return false;
+    if (certify) {
+        tintUndecided(result.image, certificate);
+        response.set_header("X-Certify-Undecided",
+                            std::to_string(certificate.counts.undecidedFraction()));
+        response.set_header("X-Certify-Ms", std::to_string(certificate.seconds * 1000));
+    }
     answerBytes(
         response,
         encodePng(result.image, scene.render.bitDepth, scene.render.alpha == AlphaMode::Opaque),
@@ -144,7 +178,8 @@ void renderRoute(ExploreServer::State& state, const Request& request, Response& 
             checkDownloadImage(scene, state.options.limits);
         else
             checkInteractiveImage(scene, state.options.limits);
-        if (answerRender(state, download ? "" : client, scene, response) && download)
+        const bool certify = certifyFromQuery(query);
+        if (answerRender(state, download ? "" : client, scene, response, certify) && download)
             response.set_header("Content-Disposition", "attachment; filename=\"quaternia.png\"");
     });
 }

@@ -11,11 +11,14 @@
 //   /api/parameters     the table, with the starting scene's values
 //   /api/render         PNG of the view, at most ExploreLimits::interactivePixels; 204 when a
 //                       newer request of the same `client` cancelled it
+//                       (certify=true: the certificate's undecided pixels tinted magenta,
+//                       X-Certify-Undecided their fraction; a scene the certificate refuses
+//                       is drawn untinted, the refusal in X-Certify-Error and X-Certify-Key)
 //   /api/frame          PNG of frame `frame` (from 1) of the view's film (animation.keys and
 //                       [animation]): the library's sceneAtFrame, limited as /api/render;
 //                       204 when a newer frame of the same `client` cancelled it
 //   /api/film           the film's frame count, fps and keys as JSON (explore_film.h)
-//   /api/download       PNG as an attachment, up to 4096 x 4096
+//   /api/download       PNG as an attachment, up to 4096 x 4096 (certify as /api/render)
 //   /api/mandelbrot     PNG of the Mandelbrot set of the formula (z^2 + c when it has none)
 //   /api/scene          the view as a scene file (TOML), with its [animation] and keys
 //   /api/command        the view as a `quaternia render` command line

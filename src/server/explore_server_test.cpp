@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "quaternia/image/png_io.h"
+#include "quaternia/render/pixel_certificate.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/json.h"
 #include "quaternia/scene/parameters.h"
@@ -87,6 +88,69 @@ TEST_F(ExploreApi, RendersTheSamePngAsTheLibrary) {
     applyOverride(scene, "fractal.c=[-0.1, 0.7, 0, 0]");
     auto expected = encodePng(render(scene).image, 8);
     EXPECT_EQ(r->body, std::string(expected.begin(), expected.end()));
+}
+
+Image decodedPng(const std::string& body) {
+    return decodePng(std::span(reinterpret_cast<const uint8_t*>(body.data()), body.size()));
+}
+
+TEST_F(ExploreApi, CertifyTintsTheUndecidedPixelsAndNothingElse) {
+    startServer(options());
+    const std::string view = "/api/render?client=a&render.width=64&render.height=36";
+    auto plain = get(view);
+    auto certified = get(view + "&certify=true");
+    ASSERT_TRUE(plain && certified);
+    ASSERT_EQ(plain->status, 200) << plain->body;
+    ASSERT_EQ(certified->status, 200) << certified->body;
+    EXPECT_FALSE(certified->has_header("X-Certify-Error"));
+    // The library's picture, certificate and tint, byte for byte.
+    Scene scene = defaultScene();
+    applyOverride(scene, "render.width=64");
+    applyOverride(scene, "render.height=36");
+    Image expected = render(scene).image;
+    const PixelCertificate certificate = certifyPixels(scene);
+    tintUndecided(expected, certificate);
+    const auto png = encodePng(expected, 8, scene.render.alpha == AlphaMode::Opaque);
+    EXPECT_EQ(certified->body, std::string(png.begin(), png.end()));
+    EXPECT_EQ(std::stod(certified->get_header_value("X-Certify-Undecided")),
+              std::stod(std::to_string(certificate.counts.undecidedFraction())));
+    // Every pixel that differs from the plain picture is undecided and mixed halfway with
+    // magenta (to the 8-bit rounding), and every undecided pixel differs.
+    const Image a = decodedPng(plain->body), b = decodedPng(certified->body);
+    ASSERT_EQ(a.width(), 64);
+    int64_t tinted = 0;
+    for (int y = 0; y < 36; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const Rgba p = a.at(x, y), q = b.at(x, y);
+            if (p == q) continue;
+            ++tinted;
+            EXPECT_EQ(certificate.at(x, y), PixelClass::kUndecided) << x << ", " << y;
+            EXPECT_NEAR(q.r, 0.5f * (p.r + 1), 1.01f / 255) << x << ", " << y;
+            EXPECT_NEAR(q.g, 0.5f * p.g, 1.01f / 255) << x << ", " << y;
+            EXPECT_NEAR(q.b, 0.5f * (p.b + 1), 1.01f / 255) << x << ", " << y;
+        }
+    EXPECT_GT(tinted, 0);
+    EXPECT_EQ(tinted, certificate.counts.undecided);
+    // certify=false is the plain picture; anything but a boolean is a 400 naming certify.
+    EXPECT_EQ(get(view + "&certify=false")->body, plain->body);
+    expectBadKey(get(view + "&certify=maybe"), "certify");
+}
+
+TEST_F(ExploreApi, CertifyRefusalIsReportedAndThePictureIsUntinted) {
+    startServer(options());
+    // Bicomplex log has no interval extension: validateCertificate refuses it.
+    const std::string view =
+        "/api/render?client=a&render.width=32&render.height=24&render.samples=1"
+        "&fractal.algebra=bicomplex&fractal.formula=%22log(z)%20%2B%20c%22";
+    auto plain = get(view);
+    auto certified = get(view + "&certify=true");
+    ASSERT_TRUE(plain && certified);
+    ASSERT_EQ(certified->status, 200) << certified->body;
+    EXPECT_EQ(certified->body, plain->body);
+    EXPECT_EQ(certified->get_header_value("X-Certify-Key"), "fractal.formula");
+    const std::string message = certified->get_header_value("X-Certify-Error");
+    EXPECT_NE(message.find("log"), std::string::npos) << message;
+    EXPECT_FALSE(certified->has_header("X-Certify-Undecided"));
 }
 
 TEST_F(ExploreApi, BadParametersAre400NamingTheKey) {

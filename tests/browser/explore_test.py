@@ -121,6 +121,21 @@ def explore(server, browser, arguments, work):
         driver.save_screenshot(arguments.screenshot)
         step("wrote " + arguments.screenshot)
     else:
+        # Certify: the final frame again, its undecided pixels tinted magenta; cleared, the
+        # plain picture again.
+        click(driver, "certify")
+        wait_until(driver, "return document.body.dataset.certify !== undefined;", 120)
+        wait_for_final(driver)
+        undecided = float(driver.execute_script("return document.body.dataset.certify;"))
+        check((shown_image(driver) != first) == (undecided > 0),
+              "the tint shows exactly when pixels are undecided (%g)" % undecided)
+        check("undecided" in driver.find_element(By.ID, "status").text,
+              "the status line gives the undecided fraction")
+        click(driver, "certify")
+        wait_for_final(driver)
+        check(shown_image(driver) == first, "clearing certify shows the plain picture again")
+        step("certify tinted %.2f%% of the pixels" % (100 * undecided))
+
         # Drag the slider of c's i component with the mouse: from its middle to 62% of its
         # width, in 8 moves (offsets are from the element's centre).
         slider = driver.find_element(By.ID, "ctl-fractal_c-1")

@@ -27,14 +27,16 @@ std::string kindName(const Scene& scene) {
     return std::get<std::string>(findParameter("plane.kind")->read(scene));
 }
 
-QuaternionJuliaSet juliaSetOfScene(const Scene& scene) {
+}  // namespace
+
+QuaternionJuliaSet planeJuliaSet(const Scene& scene) {
     return QuaternionJuliaSet(compileFormula(scene.fractal.formula, scene.fractal.c),
                               scene.plane.maxIterations, scene.fractal.bailout);
 }
 
-// The degree d of a formula z^d + c, checked by compiling it with a marker c: its constant must
-// be that c and its top term z^d alone.
-int multibrotDegree(const Scene& scene) {
+// Checked by compiling the formula with a marker c: its constant must be that c and its top
+// term z^d alone.
+int planeMultibrotDegree(const Scene& scene) {
     const Quaternion marker{0.5, 0.25, 0.125, 0.0625};
     auto power = compileFormula(scene.fractal.formula, marker).powerForm();
     if (!power || power->scale != 1 || !(power->constant == marker))
@@ -44,6 +46,8 @@ int multibrotDegree(const Scene& scene) {
                             scene.fractal.formula + "\" is not of that form");
     return power->degree;
 }
+
+namespace {
 
 // An escaped point takes the palette's colour, darkened towards the interior within two pixels
 // of the set, so that filaments thinner than a pixel stay visible (the distance estimate as a
@@ -132,18 +136,20 @@ PlaneImage renderEscape(const Scene& scene, const PlaneView& view, double scale,
 template <typename ToQuaternion>
 PlaneImage renderJulia(const Scene& scene, const PlaneView& view, double scale,
                        const PlaneRenderOptions& options, const ToQuaternion& toQuaternion) {
-    const QuaternionJuliaSet set = juliaSetOfScene(scene);
+    const QuaternionJuliaSet set = planeJuliaSet(scene);
     return renderEscape(scene, view, scale, options,
                         [&](std::complex<double> z) { return set.estimate(toQuaternion(z)); });
 }
 
-// The set of a scene in another algebra, iterated plane.max_iterations times (the renderer's
-// HypercomplexJuliaSet with the plane's iteration count).
-Fractal hypercomplexSetOfScene(const Scene& scene) {
+}  // namespace
+
+Fractal planeHypercomplexFractal(const Scene& scene) {
     Scene planeScene = scene;
     planeScene.fractal.maxIterations = scene.plane.maxIterations;
     return hypercomplexFractalFromScene(planeScene);
 }
+
+namespace {
 
 // The slice kind in another algebra: plane.origin + x plane.u + y plane.v is the algebra's
 // point (components 1, i, j, k) for the 4-component algebras, as for the quaternions; for the
@@ -152,7 +158,7 @@ Fractal hypercomplexSetOfScene(const Scene& scene) {
 // K_N exactly as the renderer and the mesher take it; the estimate only colours escaping points.
 PlaneImage renderHypercomplexSlice(const Scene& scene, const PlaneView& view,
                                    const PlaneRenderOptions& options) {
-    const auto fractal = hypercomplexSetOfScene(scene);
+    const auto fractal = planeHypercomplexFractal(scene);
     const HypercomplexJuliaSet& set = *fractal.setAs<HypercomplexJuliaSet>();
     const PlaneSettings& plane = scene.plane;
     const bool throughSlice = algebraDimension(scene.fractal.algebra) == 8;
@@ -174,19 +180,14 @@ PlaneImage renderHypercomplexSlice(const Scene& scene, const PlaneView& view,
 
 // Whether the scene's algebra takes the quaternions' own set, the expanded polynomial, whose
 // complex restriction the planes of complex dynamics draw (algebraRules); the others reach them
-// through the copy of C their formula keeps (complexKindScene) or draw a slice.
+// through the copy of C their formula keeps (planeDrawnScene) or draw a slice.
 bool ownQuaternionSet(const Scene& scene) {
     return algebraRules(scene.fractal.algebra).quaternionSet;
 }
 
-// The complex kinds in another algebra: where the formula maps a copy span{1, u} of C into
-// itself with every constant in it (HypercomplexFormula::complexAxis), it acts there as the
-// same formula on span{1, u} in H, so the quaternion scene with c's components 0 .. 3 has the
-// same complex restriction, and that scene is drawn. The Mandelbrot set of z^d + c is checked
-// with c = 0.5 + 0.25 i: every other constant must then lie in span{1, i}, where the formula is
-// z^d + c for each complex c as the quaternion check finds. Refused, naming plane.kind and the
-// algebra, where there is no such plane. The quaternions' scene is returned as it is.
-Scene complexKindScene(const Scene& scene) {
+}  // namespace
+
+Scene planeDrawnScene(const Scene& scene) {
     if (ownQuaternionSet(scene)) return scene;
     const bool mandelbrot = scene.plane.kind == PlaneKind::Mandelbrot;
     Scene probe = scene;
@@ -195,7 +196,7 @@ Scene complexKindScene(const Scene& scene) {
         probe.fractal.cUpper = {};
     }
     const auto axis =
-        hypercomplexSetOfScene(probe).setAs<HypercomplexJuliaSet>()->formula().complexAxis();
+        planeHypercomplexFractal(probe).setAs<HypercomplexJuliaSet>()->formula().complexAxis();
     if (!axis || (mandelbrot && !inPlane(kUnitI, *axis)))
         throw UserError("plane.kind",
                         "plane.kind = \"" + kindName(scene) +
@@ -211,8 +212,6 @@ Scene complexKindScene(const Scene& scene) {
     quaternion.slice.axes.clear();
     return quaternion;
 }
-
-}  // namespace
 
 Color escapeColor(double smoothIteration) {
     // a + b cos(2 pi (f t + d)) per channel, t growing like the logarithm of the count so that
@@ -242,7 +241,7 @@ PlaneView planeViewFromScene(const Scene& scene) {
 }
 
 ComplexRestriction complexRestrictionOfScene(const Scene& scene) {
-    if (!ownQuaternionSet(scene)) return complexRestrictionOfScene(complexKindScene(scene));
+    if (!ownQuaternionSet(scene)) return complexRestrictionOfScene(planeDrawnScene(scene));
     auto restriction =
         restrictToComplexPlane(compileFormula(scene.fractal.formula, scene.fractal.c));
     if (!restriction)
@@ -267,13 +266,13 @@ void validatePlaneScene(const Scene& scene) {
     validateScene(scene);
     const PlaneSettings& plane = scene.plane;
     if (!ownQuaternionSet(scene)) {
-        hypercomplexSetOfScene(scene);  // formula, bailout and slice keys
+        planeHypercomplexFractal(scene);  // formula, bailout and slice keys
         if (plane.kind != PlaneKind::Slice) {
-            validatePlaneScene(complexKindScene(scene));
+            validatePlaneScene(planeDrawnScene(scene));
             return;
         }
     } else {
-        juliaSetOfScene(scene);  // the formula compiles, the bailout is usable
+        planeJuliaSet(scene);  // the formula compiles, the bailout is usable
     }
     switch (plane.kind) {
         case PlaneKind::Julia:
@@ -282,7 +281,7 @@ void validatePlaneScene(const Scene& scene) {
             complexRestrictionOfScene(scene);
             break;
         case PlaneKind::Mandelbrot:
-            multibrotDegree(scene);
+            planeMultibrotDegree(scene);
             break;
         case PlaneKind::Slice: {
             if (normSquared(plane.u) == 0) throw UserError("plane.u", "plane.u must not be zero");
@@ -316,7 +315,7 @@ void validatePlaneScene(const Scene& scene) {
 PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
     validatePlaneScene(scene);
     if (!ownQuaternionSet(scene) && scene.plane.kind != PlaneKind::Slice)
-        return renderPlane(complexKindScene(scene), options);
+        return renderPlane(planeDrawnScene(scene), options);
     const PlaneView view = planeViewFromScene(scene);
     const PlaneSettings& plane = scene.plane;
     switch (plane.kind) {
@@ -334,7 +333,7 @@ PlaneImage renderPlane(const Scene& scene, const PlaneRenderOptions& options) {
             });
         }
         case PlaneKind::Mandelbrot: {
-            const int degree = multibrotDegree(scene);
+            const int degree = planeMultibrotDegree(scene);
             const int iterations = plane.maxIterations;
             const double pixelSize = view.pixelSize();
             return renderSamples(view, scene.render.samples, options, [&](std::complex<double> c) {

@@ -9,6 +9,8 @@
 #include <cstdint>
 
 #include "quaternia/algebra/complex_polynomial.h"
+#include "quaternia/fractal/distance.h"
+#include "quaternia/fractal/fractal.h"
 #include "quaternia/image/image.h"
 #include "quaternia/image/plane_view.h"
 #include "quaternia/render/render.h"
@@ -40,6 +42,25 @@ PlaneView planeViewFromScene(const Scene& scene);
 // drawn as itself, not as its mirror image a + b i). Throws UserError naming fractal.formula
 // when the coefficients share no complex plane.
 ComplexRestriction complexRestrictionOfScene(const Scene& scene);
+
+// The sets the kinds iterate, plane.max_iterations times (what renderPlane draws, and what
+// plane_certificate.h proves): the quaternions' set of fractal.formula with fractal.c and
+// fractal.bailout (the julia kinds, and the slice kind in H), and in the other algebras the
+// slice kind's HypercomplexJuliaSet with its slice (slice.origin, slice.axes). Throw UserError
+// naming the key.
+QuaternionJuliaSet planeJuliaSet(const Scene& scene);
+Fractal planeHypercomplexFractal(const Scene& scene);
+// The scene renderPlane draws for a kind other than slice: the scene itself in the quaternions;
+// in another algebra, where the formula maps a copy span{1, u} of C into itself with every
+// constant in it (HypercomplexFormula::complexAxis), the quaternion scene with c's components
+// 0 .. 3, which has the same complex restriction (the formula acts on span{1, u} as on its copy
+// in H). The Mandelbrot set of z^d + c is checked with c = 0.5 + 0.25 i: every other constant
+// must then lie in span{1, i}. Throws UserError naming plane.kind and the algebra where there
+// is no such plane.
+Scene planeDrawnScene(const Scene& scene);
+// The degree d of fractal.formula = z^d + c (the mandelbrot kind); throws UserError naming
+// fractal.formula for a formula of another form.
+int planeMultibrotDegree(const Scene& scene);
 
 // validateScene, then what the chosen plane.kind needs: a complex restriction (julia kinds,
 // basins), a formula z^d + c (mandelbrot), plane.u and plane.v neither zero nor parallel
