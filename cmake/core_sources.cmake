@@ -25,6 +25,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/algebra/hypercomplex_formula.cpp
   quaternia/interval/interval_element.cpp
   quaternia/interval/segment_form.cpp
+  quaternia/interval/ball_form.cpp
   quaternia/interval/function_forms.cpp
   quaternia/fractal/distance.cpp
   quaternia/fractal/fractal.cpp

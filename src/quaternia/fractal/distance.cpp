@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "quaternia/fractal/escape_time.h"
+#include "quaternia/interval/ball_form.h"
 #include "quaternia/interval/interval_element.h"
 #include "quaternia/interval/segment_form.h"
 #include "quaternia/util/error.h"
@@ -128,8 +129,11 @@ bool QuaternionJuliaSet::excludesTube(const TubeForm& tube) const {
 
 bool QuaternionJuliaSet::includesBox(const Hypercomplex& centre, double radius) const {
     if (!intervalExtension_) return false;
-    return boxAboutStaysInBall(*program_, MultiplicationTable::of(Algebra::kQuaternion), centre,
-                               radius, maxIterations_, bailout_);
+    const auto& table = MultiplicationTable::of(Algebra::kQuaternion);
+    // The ball about the box first (ball_form.h), then the box.
+    return ballStaysInBall(*program_, table, {centre, 2 * radius * (1 + 1e-15)}, maxIterations_,
+                           bailout_) ||
+           boxAboutStaysInBall(*program_, table, centre, radius, maxIterations_, bailout_);
 }
 
 bool QuaternionJuliaSet::contains(const Quaternion& z0) const {

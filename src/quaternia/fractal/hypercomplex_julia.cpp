@@ -1,5 +1,6 @@
 #include "quaternia/fractal/hypercomplex_julia.h"
 
+#include "quaternia/interval/ball_form.h"
 #include "quaternia/interval/interval_element.h"
 #include "quaternia/interval/segment_form.h"
 
@@ -186,8 +187,11 @@ bool HypercomplexJuliaSet::excludesTube(const TubeForm& tube) const {
 
 bool HypercomplexJuliaSet::includesBox(const Hypercomplex& centre, double radius) const {
     if (!intervalExtension_) return false;
-    return boxAboutStaysInBall(formula_.program(), MultiplicationTable::of(formula_.algebra()),
-                               centre, radius, maxIterations_, bailout_);
+    const auto& table = MultiplicationTable::of(formula_.algebra());
+    // The ball about the box first (ball_form.h), then the box.
+    const double ball = std::sqrt(double(table.dimension())) * radius * (1 + 1e-15);
+    return ballStaysInBall(formula_.program(), table, {centre, ball}, maxIterations_, bailout_) ||
+           boxAboutStaysInBall(formula_.program(), table, centre, radius, maxIterations_, bailout_);
 }
 
 bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {

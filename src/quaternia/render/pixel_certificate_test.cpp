@@ -141,11 +141,11 @@ TEST(Certificate, RendererAgreesWithProof) {
             Scene scene = c.scene;
             setParameter(scene, "render.engine", std::string(engine));
             const bool simd = std::string(engine) == "simd";
-            for (size_t t = 0; t < (simd ? targets.size() : 1); ++t) {
-                if (simd) hwy::SetSupportedTargetsForTest(targets[t]);
+            for (size_t target = 0; target < (simd ? targets.size() : 1); ++target) {
+                if (simd) hwy::SetSupportedTargetsForTest(targets[target]);
                 SCOPED_TRACE(
                     c.name + ", " + engine +
-                    (simd ? std::string(", ") + hwy::TargetName(targets[t]) : std::string()));
+                    (simd ? std::string(", ") + hwy::TargetName(targets[target]) : std::string()));
                 RenderOptions options;
                 options.passes = true;
                 const RenderResult result = render(scene, options);
