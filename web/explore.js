@@ -325,9 +325,11 @@ function downloadFrom(url) {
 
 document.getElementById('copy-scene').addEventListener('click', () => copyText('scene', 'scene'));
 document.getElementById('copy-cli').addEventListener('click', () => copyText('command', 'cli'));
+// The full-size picture, tinted where undecided when the Certify box is ticked.
 document.getElementById('download').addEventListener('click', () => downloadFrom('/api/download?' +
   viewQuery({ 'render.width': start['render.width'], 'render.height': start['render.height'],
-              'render.samples': state['render.samples'] })));
+              'render.samples': state['render.samples'],
+              ...(certifyBox.checked ? { certify: true } : {}) })));
 document.getElementById('export-mesh').addEventListener('click', () => downloadFrom('/api/mesh?' +
   viewQuery({ 'mesh.resolution': Math.min(256, state['mesh.resolution']) })));
 

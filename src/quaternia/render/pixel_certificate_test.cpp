@@ -125,7 +125,7 @@ double lengthInside(const Fractal& fractal, const Ray& ray, double t, double ste
 // footprint deep along the ray (an overshoot). The sphere tracer confirms a hit in steps of a
 // fraction of a footprint (march.cpp), so slivers thinner than that along the ray may be
 // stepped over: those are counted and reported (measured: 8 of the 230,400 pixels of the
-// default scene at 640x360, each 0.13 to 0.27 footprints deep), not failed. Both engines; the
+// default scene at 640x360, each 0.04 to 0.27 footprints deep), not failed. Both engines; the
 // SIMD engine on every target compiled in and supported here.
 TEST(Certificate, RendererAgreesWithProof) {
     const int width = testing::kSanitizedBuild ? 32 : 80, height = width * 9 / 16;
