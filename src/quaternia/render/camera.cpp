@@ -1,5 +1,7 @@
 #include "quaternia/render/camera.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <numbers>
 
@@ -57,6 +59,16 @@ std::optional<std::array<double, 2>> Camera::project(const Point3d& p) const {
     double x0 = dot(v, right_) / (s * dot(right_, right_));
     double y0 = dot(v, up_) / (s * dot(up_, up_));
     return std::array<double, 2>{(x0 + 0.5) * width_, (0.5 - y0) * height_};
+}
+
+double Camera::coneSlope(const Ray& centre, double x0, double y0, double size) const {
+    double rho = 0;
+    for (int corner = 0; corner < 4; ++corner) {
+        const Ray edge = generateRay(x0 + (corner & 1) * size, y0 + (corner >> 1) * size);
+        rho = std::max(rho, length(edge.direction - centre.direction));
+    }
+    rho = rho * (1 + 1e-9) + 1e-15;
+    return dot(centre.direction, forward_) > rho ? rho : 0;
 }
 
 }  // namespace quaternia

@@ -46,6 +46,15 @@ class Camera {
     // in front of the camera. For drawing geometry (a mesh's silhouette) in the same picture.
     std::optional<std::array<double, 2>> project(const Point3d& p) const;
 
+    // The cone of the rays through the square [x0, x0 + size)^2 of the image (pixel units)
+    // about `centre`, the ray through its middle: at distance t every such ray lies within
+    // slope t of the central ray's point, the slope being the largest chord between the central
+    // direction and a corner's (past the directions' rounding). The angle from the centre is
+    // largest at a corner while the cone stays in front of the image plane (the directions
+    // within its angle meet the plane in an ellipse): the centre's angle to the view axis plus
+    // the cone's below 90 degrees, which cos(centre's) > slope ensures. Where that fails (only
+    // near a field of view of 180 degrees) the answer is 0: no cone.
+    double coneSlope(const Ray& centre, double x0, double y0, double size) const;
     // Width of one pixel at distance t along a ray near the image centre: t * 2 tan(fov/2) / W.
     // Marching epsilons are fractions of it, so precision follows the image resolution.
     double pixelFootprint(double t) const { return t * pixelAngle_; }

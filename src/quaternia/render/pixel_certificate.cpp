@@ -8,6 +8,7 @@
 
 #include "quaternia/image/png_writer.h"
 #include "quaternia/render/march.h"
+#include "quaternia/render/proven_cones.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_fractal.h"
@@ -84,39 +85,16 @@ class Certifier {
         return {x0 - margin, y0 - margin, size + 2 * margin};
     }
 
-    // The cone of a square's rays about its central ray (proven_cones.h): the largest chord
-    // between the central direction and a corner's, per unit distance, past the directions'
-    // rounding. Zero where the cone is not in front of the image plane: the largest angle lies
-    // at a corner only while the centre's angle to the view axis plus the cone's is below 90
-    // degrees, which fails only near a field of view of 180 degrees; such a cone proves nothing.
+    // The cone of a square's rays about its central ray (Camera::coneSlope; 0: none).
     double coneSlope(const Ray& centre, const Square& square) const {
-        double rho = 0;
-        for (int corner = 0; corner < 4; ++corner) {
-            const Ray edge = camera_.generateRay(square.x0 + (corner & 1) * square.size,
-                                                 square.y0 + (corner >> 1) * square.size);
-            rho = std::max(rho, length(edge.direction - centre.direction));
-        }
-        rho = rho * (1 + 1e-9) + 1e-15;
-        return dot(centre.direction, camera_.forward()) > rho ? rho : 0;
+        return camera_.coneSlope(centre, square.x0, square.y0, square.size);
     }
 
-    // Proves the cone of `slope` about `ray` outside K_N by tubes, runs from `t` on, until
-    // `tFar` or a run shorter than `shortest` units fails; returns how far it got.
+    // The runs of proven_cones.h's proveCone, in units of unit_.
     double clearTube(const Ray& ray, double t, double tFar, double slope, int64_t shortest,
                      int64_t span, int64_t& proofs) const {
         ProofRuns runs{span};
-        while (t < tFar) {
-            const double end = std::min(t + double(runs.span) * unit_, tFar);
-            ++proofs;
-            if (fractal_.excludesTube(ray, t, end, slope * end)) {
-                t = end;
-                runs.proved();
-            } else {
-                runs.failed();
-                if (runs.span < shortest) break;
-            }
-        }
-        return t;
+        return proveCone(fractal_, ray, t, tFar, unit_, slope, shortest, runs, proofs);
     }
 
     // Where the cone of a square's rays about `centre` meets the set's ball (nothing where it

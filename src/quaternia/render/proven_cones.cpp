@@ -16,6 +16,22 @@ constexpr int kSmallestBlock = 2;
 
 }  // namespace
 
+double proveCone(const Fractal& fractal, const Ray& ray, double t, double tFar, double unit,
+                 double slope, int64_t shortest, ProofRuns& runs, int64_t& tests) {
+    while (t < tFar) {
+        const double end = std::min(t + double(runs.span) * unit, tFar);
+        ++tests;
+        if (fractal.excludesTube(ray, t, end, slope * end)) {
+            t = end;
+            runs.proved();
+        } else {
+            runs.failed();
+            if (runs.span < shortest) break;
+        }
+    }
+    return t;
+}
+
 ProvenCones::ProvenCones(const Fractal& fractal, const Camera& camera, double step)
     : fractal_(fractal),
       camera_(camera),
@@ -46,18 +62,10 @@ void ProvenCones::markPixels(int x0, int y0, int size, double until, const Tile&
 void ProvenCones::clearBlock(int x0, int y0, int size, double from, const Tile& tile,
                              std::vector<double>& provenUntil, int64_t& tests) const {
     const Ray centre = camera_.generateRay(x0 + 0.5 * size, y0 + 0.5 * size);
-    double rho = 0;
-    for (int corner = 0; corner < 4; ++corner) {
-        const Ray edge = camera_.generateRay(x0 + (corner & 1) * size, y0 + (corner >> 1) * size);
-        rho = std::max(rho, length(edge.direction - centre.direction));
-    }
-    rho = rho * (1 + 1e-9) + 1e-15;  // past the rounding of the directions
-    // The largest angle at a corner needs the cone to stay in front of the image plane (the
-    // directions within the cone's angle of the centre meet the plane in an ellipse): the
-    // centre's angle to the view axis plus the cone's below 90 degrees, which cos(centre's) >
-    // rho (at least the sine of the cone's angle) ensures. Only near a field of view of 180
-    // degrees does it fail; those pixels keep what their parent proved.
-    if (!(dot(centre.direction, camera_.forward()) > rho)) {
+    // No cone near a field of view of 180 degrees (Camera::coneSlope): those pixels keep what
+    // their parent proved.
+    const double rho = camera_.coneSlope(centre, x0, y0, size);
+    if (!(rho > 0)) {
         markPixels(x0, y0, size, from, tile, provenUntil);
         return;
     }
@@ -68,17 +76,7 @@ void ProvenCones::clearBlock(int x0, int y0, int size, double from, const Tile& 
     double t = interval ? std::max(from, interval->tNear) : 0;
     const double tFar = interval ? interval->tFar : 0;
     ProofRuns runs;  // in steps, as a ray's
-    while (t < tFar) {
-        const double end = std::min(t + double(runs.span) * step_, tFar);
-        ++tests;
-        if (fractal_.excludesTube(centre, t, end, rho * end)) {
-            t = end;
-            runs.proved();
-        } else {
-            runs.failed();
-            if (runs.span < kShortestRun) break;
-        }
-    }
+    t = proveCone(fractal_, centre, t, tFar, step_, rho, kShortestRun, runs, tests);
     const bool missed = !(t < tFar);
     if (missed || size <= kSmallestBlock) {
         markPixels(x0, y0, size, missed ? std::numeric_limits<double>::infinity() : t, tile,

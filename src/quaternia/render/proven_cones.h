@@ -24,9 +24,17 @@
 
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/render/camera.h"
+#include "quaternia/render/march.h"
 #include "quaternia/util/parallel.h"
 
 namespace quaternia {
+
+// Proves the cone of `slope` about `ray` (radius slope t at distance t; 0: the ray alone)
+// outside K_N by runs of `runs.span` units, from t on, until tFar or a run shorter than
+// `shortest` units fails; returns how far it got. The block cones here and the certificates'
+// (pixel_certificate.h) go the same way.
+double proveCone(const Fractal& fractal, const Ray& ray, double t, double tFar, double unit,
+                 double slope, int64_t shortest, ProofRuns& runs, int64_t& tests);
 
 class ProvenCones {
   public:
