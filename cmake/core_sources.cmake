@@ -29,6 +29,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/interval/function_forms.cpp
   quaternia/fractal/distance.cpp
   quaternia/fractal/fractal.cpp
+  quaternia/fractal/julia_set.cpp
   quaternia/fractal/algebra_rules.cpp
   quaternia/fractal/slice.cpp
   quaternia/fractal/hypercomplex_julia.cpp

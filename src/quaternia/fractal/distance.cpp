@@ -4,9 +4,7 @@
 #include <cmath>
 
 #include "quaternia/fractal/escape_time.h"
-#include "quaternia/interval/ball_form.h"
 #include "quaternia/interval/interval_element.h"
-#include "quaternia/interval/segment_form.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
@@ -108,32 +106,6 @@ DistanceEstimate QuaternionJuliaSet::estimate(const Quaternion& z0) const {
                            degree_, estimateRadiusSquared_};
     return withMap(power_, polynomial_,
                    [&](const auto& map) { return estimateWith(map, limits, z0); });
-}
-
-std::optional<std::string> QuaternionJuliaSet::unprovablePart() const {
-    return withoutIntervalExtension(*program_);
-}
-
-bool QuaternionJuliaSet::excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
-                                         double thickness) const {
-    if (!intervalExtension_) return false;
-    return segmentLeavesBall(*program_, MultiplicationTable::of(Algebra::kQuaternion),
-                             segmentBetween(from, to, thickness, 4), maxIterations_, bailout_);
-}
-
-bool QuaternionJuliaSet::excludesTube(const TubeForm& tube) const {
-    if (!intervalExtension_) return false;
-    return tubeLeavesBall(*program_, MultiplicationTable::of(Algebra::kQuaternion), tube,
-                          maxIterations_, bailout_);
-}
-
-bool QuaternionJuliaSet::includesBox(const Hypercomplex& centre, double radius) const {
-    if (!intervalExtension_) return false;
-    const auto& table = MultiplicationTable::of(Algebra::kQuaternion);
-    // The ball about the box first (ball_form.h), then the box.
-    return ballStaysInBall(*program_, table, {centre, 2 * radius * (1 + 1e-15)}, maxIterations_,
-                           bailout_) ||
-           boxAboutStaysInBall(*program_, table, centre, radius, maxIterations_, bailout_);
 }
 
 bool QuaternionJuliaSet::contains(const Quaternion& z0) const {

@@ -83,16 +83,12 @@ class QuaternionJuliaSet final : public JuliaSet {
             {quaternionOf(tangents[0]), quaternionOf(tangents[1]), quaternionOf(tangents[2])});
     }
 
-    // The proofs of interval/ through the program (the sets marched by their estimate do not
-    // cross by them: provesEmptySpace stays false; the certificates use them).
-    std::optional<std::string> unprovablePart() const override;
-    bool excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
-                         double thickness) const override;
-    bool excludesTube(const TubeForm& tube) const override;
-    bool includesBox(const Hypercomplex& centre, double radius) const override;
+    // The proofs of interval/ (JuliaSet) iterate the program; the renderer does not cross by
+    // them (provesEmptySpace stays false: the estimate marches), the certificates do.
+    bool hasIntervalExtension() const override { return intervalExtension_; }
 
     const Polynomial& polynomial() const { return polynomial_; }
-    const FormulaProgram& program() const { return *program_; }
+    const FormulaProgram& program() const override { return *program_; }
     int maxIterations() const override { return maxIterations_; }
     double escapeRadius() const override { return escapeRadius_; }  // certified: |z| > R escapes
     double bailout() const override { return bailout_; }            // membership radius
@@ -110,7 +106,7 @@ class QuaternionJuliaSet final : public JuliaSet {
     double bailout_;
     int degree_;
     double estimateRadiusSquared_;  // where the continuation stops
-    bool intervalExtension_;         // !unprovablePart()
+    bool intervalExtension_;        // !withoutIntervalExtension(program)
 };
 
 }  // namespace quaternia

@@ -1,8 +1,6 @@
 #include "quaternia/fractal/hypercomplex_julia.h"
 
-#include "quaternia/interval/ball_form.h"
 #include "quaternia/interval/interval_element.h"
-#include "quaternia/interval/segment_form.h"
 
 #include <algorithm>
 #include <cmath>
@@ -165,33 +163,6 @@ DistanceEstimate HypercomplexJuliaSet::estimate(const Hypercomplex& z0) const {
             break;
     }
     return multiplicativeEstimate(z0);
-}
-
-bool HypercomplexJuliaSet::excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
-                                           double thickness) const {
-    if (!intervalExtension_) return false;
-    const int d = formula_.dimension();
-    return segmentLeavesBall(formula_.program(), MultiplicationTable::of(formula_.algebra()),
-                             segmentBetween(from, to, thickness, d), maxIterations_, bailout_);
-}
-
-std::optional<std::string> HypercomplexJuliaSet::unprovablePart() const {
-    return withoutIntervalExtension(formula_.program());
-}
-
-bool HypercomplexJuliaSet::excludesTube(const TubeForm& tube) const {
-    if (!intervalExtension_) return false;
-    return tubeLeavesBall(formula_.program(), MultiplicationTable::of(formula_.algebra()), tube,
-                          maxIterations_, bailout_);
-}
-
-bool HypercomplexJuliaSet::includesBox(const Hypercomplex& centre, double radius) const {
-    if (!intervalExtension_) return false;
-    const auto& table = MultiplicationTable::of(formula_.algebra());
-    // The ball about the box first (ball_form.h), then the box.
-    const double ball = std::sqrt(double(table.dimension())) * radius * (1 + 1e-15);
-    return ballStaysInBall(formula_.program(), table, {centre, ball}, maxIterations_, bailout_) ||
-           boxAboutStaysInBall(formula_.program(), table, centre, radius, maxIterations_, bailout_);
 }
 
 bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {

@@ -59,11 +59,8 @@ class HypercomplexJuliaSet final : public JuliaSet {
     // segments are iterated through the program and the multiplication table (interval/
     // segment_form.h, segmentLeavesBall; exp, sin, cos, sinh and cosh by function_forms.h).
     bool provesEmptySpace() const override { return intervalExtension_; }
-    std::optional<std::string> unprovablePart() const override;
-    bool excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
-                         double thickness) const override;
-    bool excludesTube(const TubeForm& tube) const override;
-    bool includesBox(const Hypercomplex& centre, double radius) const override;
+    const FormulaProgram& program() const override { return formula_.program(); }
+    bool hasIntervalExtension() const override { return intervalExtension_; }
 
     const HypercomplexFormula& formula() const { return formula_; }
     int maxIterations() const override { return maxIterations_; }

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "quaternia/algebra/formula_program.h"
 #include "quaternia/algebra/hypercomplex.h"
 #include "quaternia/fractal/distance_estimate.h"
 #include "quaternia/interval/segment_form.h"
@@ -52,20 +53,24 @@ class JuliaSet {
     // extension (interval/interval_element.h). The sets marched by their estimate answer false,
     // though their proofs below work as well (the certificates use them).
     virtual bool provesEmptySpace() const { return false; }
+    // The map as the proofs iterate it: its program in the algebra's multiplication table, and
+    // whether it has an interval extension (interval/interval_element.h; kept by the set, as
+    // the renderer asks on every segment).
+    virtual const FormulaProgram& program() const = 0;
+    virtual bool hasIntervalExtension() const = 0;
     // The part of the formula with no interval extension, named for a one-line refusal ("the
     // function log"); nothing where excludesSegment and includesBox can prove.
-    virtual std::optional<std::string> unprovablePart() const = 0;
+    std::optional<std::string> unprovablePart() const;
     // True where no point within `thickness` (in every component) of the segment from `from` to
     // `to` (points of the algebra) belongs to K_N, proven by iterating the segment in affine
     // arithmetic (interval/segment_form.h); false proves nothing.
-    virtual bool excludesSegment(const Hypercomplex& from, const Hypercomplex& to,
-                                 double thickness) const = 0;
+    bool excludesSegment(const Hypercomplex& from, const Hypercomplex& to, double thickness) const;
     // The same for every point of a tube (interval/segment_form.h, tubeLeavesBall).
-    virtual bool excludesTube(const TubeForm& tube) const = 0;
+    bool excludesTube(const TubeForm& tube) const;
     // True where every point within `radius` (in every component) of `centre` belongs to K_N,
-    // proven by iterating the box in interval arithmetic (interval/interval_element.h,
-    // boxStaysInBall); false proves nothing.
-    virtual bool includesBox(const Hypercomplex& centre, double radius) const = 0;
+    // proven by iterating the ball about that box (interval/ball_form.h), then the box
+    // (interval/interval_element.h, boxStaysInBall); false proves nothing.
+    bool includesBox(const Hypercomplex& centre, double radius) const;
 
     virtual int maxIterations() const = 0;
     // Membership radius: K_N lies in the ball of this radius.

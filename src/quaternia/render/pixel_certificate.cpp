@@ -252,8 +252,10 @@ class Certifier {
 
 }  // namespace
 
-void validateCertificate(const Scene& scene) {
-    const Fractal fractal = fractalFromScene(scene);
+namespace {
+
+// validateCertificate for the scene's fractal, made once by the caller.
+void validateCertificateOf(const Scene& scene, const Fractal& fractal) {
     if (auto part = fractal.unprovablePart()) {
         throw UserError("fractal.formula",
                         "fractal.formula: " + *part +
@@ -266,10 +268,16 @@ void validateCertificate(const Scene& scene) {
     }
 }
 
+}  // namespace
+
+void validateCertificate(const Scene& scene) {
+    validateCertificateOf(scene, fractalFromScene(scene));
+}
+
 PixelCertificate certifyPixels(const Scene& scene, const WorkOptions& options) {
     validateScene(scene);
-    validateCertificate(scene);
     const Fractal fractal = fractalFromScene(scene);
+    validateCertificateOf(scene, fractal);
     const Camera camera(scene.camera, scene.render.width, scene.render.height);
     return certifyPixels(fractal, camera, scene.render.epsilon, options);
 }

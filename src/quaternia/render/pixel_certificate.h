@@ -2,16 +2,18 @@
 // meets, in interval arithmetic (interval/), independent of the distance estimate and of the
 // marchers' floating point:
 // - missed: no point of K_N lies in the pixel's footprint cone, from the camera to where the
-//   cone leaves the set's ball. The cone is the one about the pixel's central ray that holds
-//   every ray through the pixel's square and every point within max(1, 2 render.epsilon)
-//   pixel footprints of the central ray (the sphere tracer takes a point within epsilon
-//   footprints of an estimate below epsilon, which is at least half the distance, as a grazing
-//   hit: march.cpp). Proven by tubes about the central ray (Fractal::excludesTube), as the
-//   renderer's cones of proof (proven_cones.h) prove blocks of pixels, here down to the pixel.
-// - hit: a point of the central ray is proven in K_N (Fractal::includesPoint: the box of its
-//   rounding, iterated, stays in the ball), and the first point of K_N on the central ray lies
-//   within [nearestHit, farthestHit]: the ray is proven outside K_N before nearestHit (by the
-//   tubes, then by segments of the central ray alone), and the point at farthestHit is in it.
+//   cone leaves the set's ball. The cone is that of every ray through the pixel's footprint
+//   square, of side max(1, 4 render.epsilon) pixels about its centre, whose inscribed disc holds
+//   the points within 2 epsilon footprints of the central ray (the sphere tracer takes a point
+//   within epsilon footprints of an estimate below epsilon, which is at least half the
+//   distance, as a grazing hit: march.cpp). Proven by tubes (Fractal::excludesTube, proveCone),
+//   as the renderer's cones of proof (proven_cones.h) prove blocks of pixels, here down to the
+//   pixel and, where its cone stops short, its quarters.
+// - hit: a point of the central ray is proven in K_N (Fractal::includesPoint: the ball, then
+//   the box, of its rounding, iterated, stays in the bailout's ball), and the first point of
+//   K_N on the central ray lies within [nearestHit, farthestHit]: the ray is proven outside K_N
+//   before nearestHit (by the blocks' tubes, then by segments of the central ray alone), and
+//   the point at farthestHit is in it.
 // - undecided: neither, where the footprint straddles the surface (silhouettes, grazing rays,
 //   parts thinner than a pixel) or the orbit of the central ray's points lies too near the
 //   bailout for the box to decide.
@@ -72,8 +74,8 @@ void validateCertificate(const Scene& scene);
 // The certificate of the scene's picture at render.width x render.height (validates first;
 // threads, cancellation and progress as a render's).
 PixelCertificate certifyPixels(const Scene& scene, const WorkOptions& options = {});
-// The same for a fractal seen by a pinhole camera, whose footprint cones hold the points within
-// max(1, 2 epsilon) pixel footprints of the central rays (header comment).
+// The same for a fractal seen by a pinhole camera, with footprint squares of side
+// max(1, 4 epsilon) pixels (header comment).
 PixelCertificate certifyPixels(const Fractal& fractal, const Camera& camera, double epsilon,
                                const WorkOptions& options = {});
 
