@@ -15,6 +15,11 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/dynamics/mandelbrot.cpp
   quaternia/plane/plane_render.cpp
   quaternia/plane/plane_certificate.cpp
+  quaternia/plane/plane_cells.cpp
+  quaternia/cellmap/cell_grid.cpp
+  quaternia/cellmap/cell_mapping.cpp
+  quaternia/cellmap/box_maps.cpp
+  quaternia/cellmap/undecided_band.cpp
   quaternia/algebra/formula_parse.cpp
   quaternia/algebra/formula_expand.cpp
   quaternia/algebra/formula_program.cpp

@@ -14,6 +14,7 @@
 #include "cmd/mesh_command.h"
 #include "cmd/orbit_command.h"
 #include "cmd/plane_command.h"
+#include "cmd/certify_command.h"
 #include "cmd/reference_command.h"
 #include "cmd/render_command.h"
 #include "quaternia/scene/parameters.h"
@@ -51,6 +52,8 @@ int main(int argc, char** argv) {
     addCyclesCommand(app, cyclesOptions);
     PlaneCommandOptions planeOptions;
     addPlaneCommand(app, planeOptions);
+    CertifyCommandOptions certifyOptions;
+    addCertifyCommand(app, certifyOptions);
     MeshCommandOptions meshOptions;
     addMeshCommand(app, meshOptions);
     ExploreCommandOptions exploreOptions;
@@ -65,6 +68,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("orbit")) return runOrbitCommand(orbitOptions);
         if (app.got_subcommand("cycles")) return runCyclesCommand(cyclesOptions);
         if (app.got_subcommand("plane")) return runPlaneCommand(planeOptions);
+        if (app.got_subcommand("certify")) return runCertifyCommand(certifyOptions);
         if (app.got_subcommand("mesh")) return runMeshCommand(meshOptions);
         if (app.got_subcommand("explore")) return runExploreCommand(exploreOptions);
         if (app.got_subcommand("reference")) return runReferenceCommand(app, referenceOptions);

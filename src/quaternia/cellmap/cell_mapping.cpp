@@ -1,0 +1,303 @@
+#include "quaternia/cellmap/cell_mapping.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+
+#include "quaternia/util/error.h"
+#include "quaternia/util/memory_budget.h"
+
+namespace quaternia {
+namespace {
+
+// The value of a cell that is still a candidate for the inside (the greatest fixed point).
+constexpr uint8_t kCandidate = 200;
+// Levels with at most this many undecided cells look for trapped regions from scratch (the
+// greatest fixed point); larger ones grow the inside they inherit.
+constexpr size_t kGreatestFixedPointCells = size_t(1) << 18;
+
+// Cells of a level as one 64-bit key: 21 bits per axis (2^21 cells per axis at most).
+using CellKey = uint64_t;
+constexpr int kKeyBits = 21;
+constexpr int64_t kMaxCellsPerAxis = int64_t(1) << kKeyBits;
+
+CellKey keyOf(const CellIndex& c) {
+    return uint64_t(c[0]) | uint64_t(c[1]) << kKeyBits | uint64_t(c[2]) << 2 * kKeyBits;
+}
+CellIndex indexOf(CellKey k) {
+    const uint64_t mask = (uint64_t(1) << kKeyBits) - 1;
+    return {int64_t(k & mask), int64_t((k >> kKeyBits) & mask), int64_t(k >> 2 * kKeyBits)};
+}
+
+Box3 cellBox(const CellGrid& grid, int level, const CellIndex& c) {
+    Box3 box{};
+    for (int a = 0; a < grid.dimension(); ++a)
+        box[a] = {grid.cellLower(level, a, c[a]), grid.cellLower(level, a, c[a] + 1)};
+    return box;
+}
+
+// A cell's image at its level, computed once per level: the cells it touches, and whether the
+// cell lies beyond the escape radius or its image leaves the grid.
+struct Image {
+    std::array<int32_t, 3> first{0, 0, 0}, last{0, 0, 0};
+    bool escapes = false;  // every point of the cell escapes
+    bool beyond = false;   // part of the image lies beyond the grid (beyond the escape radius)
+    bool empty = false;    // the whole image lies beyond the grid
+};
+
+Image imageOf(const CellGrid& grid, const BoxMap& map, int level, const CellIndex& c) {
+    Image image;
+    const Box3 box = cellBox(grid, level, c);
+    if (map.escapes(box)) {
+        image.escapes = true;
+        return image;
+    }
+    const Box3 mapped = map.image(box);
+    for (int a = 0; a < grid.dimension(); ++a) {
+        const AxisRange r = grid.cellsTouched(level, a, mapped[a]);
+        image.beyond = image.beyond || r.beyond;
+        image.empty = image.empty || r.first > r.last;
+        image.first[size_t(a)] = int32_t(r.first);
+        image.last[size_t(a)] = int32_t(r.last);
+    }
+    return image;
+}
+
+template <typename Visit>
+bool visitImage(const CellGrid& grid, int level, const Image& image, Visit&& visit) {
+    return grid.visitCells(level, {image.first[0], image.first[1], image.first[2]},
+                           {image.last[0], image.last[1], image.last[2]}, visit);
+}
+
+bool cancelled(const WorkOptions& work) {
+    return work.cancel && work.cancel->load(std::memory_order_relaxed);
+}
+
+// Sweeps `active` until a sweep changes no cell: test(n, cell) returns true where the cell
+// moved to its new value (it wrote it). Cells that moved leave the list (and their images
+// `images`). Returns the sweep count, or -1 if cancelled.
+template <typename Test>
+int sweepToFixedPoint(std::vector<CellKey>& active, std::vector<Image>& images,
+                      const WorkOptions& work, Test&& test) {
+    int sweeps = 0;
+    std::vector<uint8_t> moved;
+    while (!active.empty()) {
+        if (cancelled(work)) return -1;
+        ++sweeps;
+        moved.assign(active.size(), 0);
+        std::atomic<int64_t> changes{0};
+        ParallelOptions parallel;
+        parallel.threads = work.threads;
+        parallel.chunkSize = 4096;
+        parallelFor(int64_t(active.size()), parallel, [&](int64_t begin, int64_t end, int) {
+            int64_t local = 0;
+            for (int64_t n = begin; n < end; ++n)
+                if (test(size_t(n), indexOf(active[size_t(n)]))) moved[size_t(n)] = 1, ++local;
+            changes += local;
+        });
+        if (changes.load() == 0) break;
+        size_t kept = 0;
+        for (size_t n = 0; n < active.size(); ++n)
+            if (!moved[n]) {
+                active[kept] = active[n];
+                images[kept++] = images[n];
+            }
+        active.resize(kept);
+        images.resize(kept);
+    }
+    return sweeps;
+}
+
+// The least fixed point of "every cell the image touches has value `target`" over the cells
+// whose state is kPending, worklist style: a cell that a touched cell blocks waits on that
+// cell's list if the blocker may still reach `target` (a pending cell of this level), and is
+// tested again only when it does; blocked by anything else, it is done. Every cell is tested
+// about once per blocker that falls, instead of once per sweep. Sets the cells that reach
+// `target` (grid and state kReached).
+enum : uint8_t { kPending = 0, kReached = 1, kExcluded = 2 };
+
+int64_t growToFixedPoint(CellGrid& grid, int level, const std::vector<CellKey>& cells,
+                         const std::vector<Image>& images, std::vector<uint8_t>& state,
+                         const std::vector<int32_t>& slots, uint8_t target, bool outsideRules,
+                         const WorkOptions& work) {
+    const size_t count = cells.size();
+    std::vector<int32_t> waitHead(count, -1), waitNext(count, -1), queue;
+    queue.reserve(count);
+    for (size_t n = count; n-- > 0;)
+        if (state[n] == kPending) queue.push_back(int32_t(n));
+    int64_t reached = 0, tests = 0;
+    while (!queue.empty()) {
+        if ((++tests & 0xFFFF) == 0 && cancelled(work)) return -1;
+        const int32_t n = queue.back();
+        queue.pop_back();
+        const Image& image = images[size_t(n)];
+        int32_t blocker = -1;
+        bool ok;
+        if (outsideRules && (image.escapes || image.empty)) {
+            ok = true;
+        } else if (!outsideRules && image.beyond) {
+            ok = false;
+        } else {
+            ok = visitImage(grid, level, image, [&](const CellIndex& touched, uint8_t v) {
+                if (v == target) return true;
+                const int64_t slot = grid.cellSlot(level, touched);
+                const int32_t b = slot >= 0 ? slots[size_t(slot)] : -1;
+                if (b >= 0 && state[size_t(b)] == kPending) blocker = b;
+                return false;
+            });
+        }
+        if (ok) {
+            __atomic_store_n(grid.valueAddress(level, indexOf(cells[size_t(n)])), target,
+                             __ATOMIC_RELAXED);
+            state[size_t(n)] = kReached;
+            ++reached;
+            for (int32_t w = waitHead[size_t(n)]; w >= 0;) {
+                const int32_t next = waitNext[size_t(w)];
+                queue.push_back(w);
+                w = next;
+            }
+            waitHead[size_t(n)] = -1;
+        } else if (blocker >= 0) {
+            waitNext[size_t(n)] = waitHead[size_t(blocker)];
+            waitHead[size_t(blocker)] = n;
+        }
+    }
+    return reached;
+}
+
+}  // namespace
+
+CellMappingReport classifyCells(CellGrid& grid, const BoxMap& map,
+                                const CellMappingOptions& options) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    CellMappingReport report;
+    const int dimension = grid.dimension();
+    for (int a = 0; a < dimension; ++a)
+        if (grid.cellsAt(options.finestLevel, a) > kMaxCellsPerAxis)
+            throw UserError(options.memoryKey,
+                            "the finest cells would number more than 2^21 along an axis");
+
+    // Level 0's undecided cells.
+    std::vector<CellKey> undecided;
+    for (int64_t k = 0; k < (dimension > 2 ? grid.cellsAt(0, 2) : 1); ++k)
+        for (int64_t j = 0; j < grid.cellsAt(0, 1); ++j)
+            for (int64_t i = 0; i < grid.cellsAt(0, 0); ++i)
+                if (grid.valueAt(0, {i, j, k}) == uint8_t(CellClass::kUndecided))
+                    undecided.push_back(keyOf({i, j, k}));
+
+    for (int level = 0;; ++level) {
+        const auto levelStart = Clock::now();
+        CellMappingLevel stats;
+        stats.level = level;
+        stats.cells = int64_t(undecided.size());
+        auto store = [&](const CellIndex& c, uint8_t value) {
+            __atomic_store_n(grid.valueAddress(level, c), value, __ATOMIC_RELAXED);
+        };
+
+        // Every cell's image, once.
+        std::vector<Image> images(undecided.size());
+        {
+            ParallelOptions parallel;
+            parallel.threads = options.work.threads;
+            parallel.chunkSize = 4096;
+            parallelFor(int64_t(undecided.size()), parallel, [&](int64_t begin, int64_t end, int) {
+                for (int64_t n = begin; n < end; ++n)
+                    images[size_t(n)] = imageOf(grid, map, level, indexOf(undecided[size_t(n)]));
+            });
+        }
+
+        // Each cell's place in `undecided`, by its slot in the grid's tiles.
+        std::vector<int32_t> slots(size_t(grid.slotCount(level)), -1);
+        for (size_t n = 0; n < undecided.size(); ++n)
+            slots[size_t(grid.cellSlot(level, indexOf(undecided[n])))] = int32_t(n);
+        std::vector<uint8_t> state(undecided.size(), kPending);
+
+        // Outside: the least fixed point (header comment).
+        const auto outsideValue = uint8_t(CellClass::kOutside);
+        if (growToFixedPoint(grid, level, undecided, images, state, slots, outsideValue, true,
+                             options.work) < 0)
+            break;
+        std::vector<CellKey> active;
+        std::vector<Image> activeImages;
+        for (size_t n = 0; n < undecided.size(); ++n) {
+            if (state[n] == kReached) {
+                state[n] = kExcluded;  // outside: never inside
+                continue;
+            }
+            active.push_back(undecided[n]);
+            activeImages.push_back(images[n]);
+        }
+
+        // Inside. Where the level has few cells, the greatest fixed point over the cells left,
+        // all candidates at first: it finds every trapped region, the first ones included.
+        // Beyond that, the least fixed point grown from the inside cells of the levels above
+        // (as the outside grows from the escape region), which tests each cell about once per
+        // blocker instead of once per sweep.
+        const auto insideValue = uint8_t(CellClass::kInside);
+        std::vector<CellKey> candidates;
+        if (active.size() <= kGreatestFixedPointCells) {
+            candidates = active;
+            for (CellKey key : active)
+                store(indexOf(key), kCandidate);
+            stats.insideSweeps = sweepToFixedPoint(
+                candidates, activeImages, options.work, [&](size_t n, const CellIndex& c) {
+                    const Image& image = activeImages[n];
+                    const bool stays =
+                        !image.beyond &&
+                        visitImage(grid, level, image, [&](const CellIndex&, uint8_t v) {
+                            return v == insideValue || v == kCandidate;
+                        });
+                    if (!stays) store(c, uint8_t(CellClass::kUndecided));
+                    return !stays;
+                });
+            if (stats.insideSweeps < 0) break;
+            for (CellKey key : candidates)
+                store(indexOf(key), insideValue);
+        } else {
+            if (growToFixedPoint(grid, level, undecided, images, state, slots, insideValue, false,
+                                 options.work) < 0)
+                break;
+            for (size_t n = 0; n < undecided.size(); ++n)
+                if (state[n] == kReached) candidates.push_back(undecided[n]);
+        }
+        stats.inside = int64_t(candidates.size());
+        stats.outside = stats.cells - int64_t(active.size());
+
+        // Undecided: refined where the options say.
+        std::vector<CellKey> next;
+        for (CellKey key : active) {
+            const CellIndex c = indexOf(key);
+            if (grid.valueAt(level, c) != uint8_t(CellClass::kUndecided)) continue;
+            ++stats.undecided;
+            if (level >= options.finestLevel) continue;
+            if (options.refineWhere && !options.refineWhere(level, c)) continue;
+            grid.refine(level, c);
+            const CellIndex child{2 * c[0], 2 * c[1], dimension > 2 ? 2 * c[2] : 0};
+            for (int64_t k = 0; k < (dimension > 2 ? 2 : 1); ++k)
+                for (int64_t j = 0; j < 2; ++j)
+                    for (int64_t i = 0; i < 2; ++i)
+                        next.push_back(keyOf({child[0] + i, child[1] + j, child[2] + k}));
+        }
+        stats.seconds = std::chrono::duration<double>(Clock::now() - levelStart).count();
+        report.levels.push_back(stats);
+        const uint64_t bytes = grid.memoryBytes() + 3 * next.size() * sizeof(CellKey);
+        report.peakMemoryBytes = std::max(report.peakMemoryBytes, bytes);
+        if (bytes > options.memoryLimitBytes)
+            throw MemoryLimitError(options.memoryKey, "the cells need " + formatBytes(bytes) +
+                                                          ", over the limit of " +
+                                                          formatBytes(options.memoryLimitBytes));
+        if (options.work.progress)
+            options.work.progress(double(level + 1) / double(options.finestLevel + 1));
+        if (next.empty()) {
+            report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+            return report;
+        }
+        undecided = std::move(next);
+    }
+    report.completed = false;
+    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return report;
+}
+
+}  // namespace quaternia
