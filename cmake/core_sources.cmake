@@ -20,6 +20,8 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/cellmap/cell_mapping.cpp
   quaternia/cellmap/box_maps.cpp
   quaternia/cellmap/undecided_band.cpp
+  quaternia/cellmap/certified_set.cpp
+  quaternia/cellmap/certify_set.cpp
   quaternia/algebra/formula_parse.cpp
   quaternia/algebra/formula_expand.cpp
   quaternia/algebra/formula_program.cpp

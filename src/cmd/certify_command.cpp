@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "quaternia/cellmap/certify_set.h"
 #include "quaternia/image/png_writer.h"
 #include "quaternia/plane/plane_cells.h"
 #include "quaternia/scene/json.h"
@@ -92,6 +93,77 @@ int certifyPlane(const CertifyCommandOptions& options, const Scene& scene) {
     return 0;
 }
 
+Json censusJson(const CellGrid::Census& census) {
+    Json json;
+    json["outside"] = census.outside;
+    json["inside"] = census.inside;
+    json["undecided"] = census.undecided;
+    json["outside_volume"] = census.outsideVolume;
+    json["inside_volume"] = census.insideVolume;
+    json["undecided_volume"] = census.undecidedVolume;
+    return json;
+}
+
+int certifySetCells(const CertifyCommandOptions& options, const Scene& scene) {
+    validateSetCertification(scene);
+    const MemoryBudget budget = memoryBudgetFromOptions(options);
+    AtomicFile output(options.output);
+    const SetCertification result =
+        runInterruptibly("certifying", options, [&](const WorkOptions& work) {
+            return certifySet(scene, options.resolution, work,
+                              budget.bytes ? budget.bytes : UINT64_MAX);
+        });
+    if (!result.completed) return reportInterrupted();
+    const std::vector<uint8_t> bytes = result.set.encode();
+    output.write(bytes);
+    output.commit();
+    double seconds = 0;
+    uint64_t peak = 0;
+    for (const CellMappingReport& report : result.reports)
+        seconds += report.seconds, peak = std::max(peak, report.peakMemoryBytes);
+    const bool product = result.set.space == CertifiedSpace::kProduct;
+    std::FILE* stream = summaryStream({options.output});
+    if (!options.json) {
+        std::fprintf(stream, "quaternia: certified %s (%s, %lld cells per axis) in %.2f s:\n",
+                     options.output.c_str(),
+                     product ? "bicomplex product of two planes" : "reduced space (x, a, r)",
+                     (long long)result.cellsPerAxis, seconds);
+        for (size_t g = 0; g < result.census.size(); ++g) {
+            const CellGrid::Census& c = result.census[g];
+            const double total = c.outsideVolume + c.insideVolume + c.undecidedVolume;
+            std::fprintf(stream,
+                         "  %s: %lld outside, %lld inside, %lld undecided cells (%.3f%% of the "
+                         "volume undecided)\n",
+                         product ? (g == 0 ? "component 1" : "component 2") : "cells",
+                         (long long)c.outside, (long long)c.inside, (long long)c.undecided,
+                         100 * c.undecidedVolume / total);
+        }
+        return 0;
+    }
+    Json json;
+    json["command"] = "certify";
+    json["space"] = product ? "product" : "reduced";
+    json["output"] = options.output;
+    json["bytes"] = bytes.size();
+    json["formula"] = scene.fractal.formula;
+    json["algebra"] = std::string(algebraName(scene.fractal.algebra));
+    json["c"] = cComponents(scene);
+    json["escape_radius"] = result.set.escapeRadius;
+    json["cells_per_axis"] = result.cellsPerAxis;
+    Json grids = Json::array();
+    for (size_t g = 0; g < result.census.size(); ++g) {
+        Json grid = censusJson(result.census[g]);
+        grid["levels"] = levelsJson(result.reports[g]);
+        grids.push_back(grid);
+    }
+    json["grids"] = grids;
+    json["peak_memory_bytes"] = peak;
+    json["threads"] = resolveThreadCount(options.threads);
+    json["seconds"] = seconds;
+    std::fprintf(stream, "%s\n", jsonText(json).c_str());
+    return 0;
+}
+
 }  // namespace
 
 void addCertifyCommand(CLI::App& app, CertifyCommandOptions& options) {
@@ -113,7 +185,7 @@ void addCertifyCommand(CLI::App& app, CertifyCommandOptions& options) {
 int runCertifyCommand(const CertifyCommandOptions& options) {
     const Scene scene = sceneFromOptions(options);
     if (endsWith(options.output, ".png")) return certifyPlane(options, scene);
-    throw UserError("-o", "-o: cells files are not written yet");
+    return certifySetCells(options, scene);
 }
 
 }  // namespace quaternia

@@ -12,8 +12,9 @@ namespace {
 
 // The value of a cell that is still a candidate for the inside (the greatest fixed point).
 constexpr uint8_t kCandidate = 200;
-// Levels with at most this many undecided cells look for trapped regions from scratch (the
-// greatest fixed point); larger ones grow the inside they inherit.
+// Levels with at most this many undecided cells, and every level until an inside cell is
+// found, look for trapped regions from scratch (the greatest fixed point); the others grow the
+// inside they inherit.
 constexpr size_t kGreatestFixedPointCells = size_t(1) << 18;
 
 // Cells of a level as one 64-bit key: 21 bits per axis (2^21 cells per axis at most).
@@ -186,6 +187,7 @@ CellMappingReport classifyCells(CellGrid& grid, const BoxMap& map,
                 if (grid.valueAt(0, {i, j, k}) == uint8_t(CellClass::kUndecided))
                     undecided.push_back(keyOf({i, j, k}));
 
+    bool foundInside = false;
     for (int level = 0;; ++level) {
         const auto levelStart = Clock::now();
         CellMappingLevel stats;
@@ -229,14 +231,14 @@ CellMappingReport classifyCells(CellGrid& grid, const BoxMap& map,
             activeImages.push_back(images[n]);
         }
 
-        // Inside. Where the level has few cells, the greatest fixed point over the cells left,
-        // all candidates at first: it finds every trapped region, the first ones included.
+        // Inside. Where the level has few cells or no inside was found yet, the greatest fixed
+        // point over the cells left, all candidates at first: it finds every trapped region.
         // Beyond that, the least fixed point grown from the inside cells of the levels above
         // (as the outside grows from the escape region), which tests each cell about once per
         // blocker instead of once per sweep.
         const auto insideValue = uint8_t(CellClass::kInside);
         std::vector<CellKey> candidates;
-        if (active.size() <= kGreatestFixedPointCells) {
+        if (active.size() <= kGreatestFixedPointCells || !foundInside) {
             candidates = active;
             for (CellKey key : active)
                 store(indexOf(key), kCandidate);
@@ -262,6 +264,7 @@ CellMappingReport classifyCells(CellGrid& grid, const BoxMap& map,
                 if (state[n] == kReached) candidates.push_back(undecided[n]);
         }
         stats.inside = int64_t(candidates.size());
+        foundInside = foundInside || stats.inside > 0;
         stats.outside = stats.cells - int64_t(active.size());
 
         // Undecided: refined where the options say.
