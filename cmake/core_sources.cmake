@@ -22,6 +22,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/cellmap/undecided_band.cpp
   quaternia/cellmap/certified_set.cpp
   quaternia/cellmap/certify_set.cpp
+  quaternia/render/true_set_certificate.cpp
   quaternia/algebra/formula_parse.cpp
   quaternia/algebra/formula_expand.cpp
   quaternia/algebra/formula_program.cpp

@@ -31,11 +31,12 @@ void printRenderSummary(const RenderCommandOptions& options, const Scene& scene,
             const Json& c = extra["certificate"];
             std::fprintf(
                 stream,
-                "quaternia: certified %s in %.2f s: %lld missed, %lld hit, %lld "
+                "quaternia: certified %s against %s in %.2f s: %lld missed, %lld hit, %lld "
                 "undecided (%.2f%%)\n",
                 c["output"].is_null() ? "the picture" : c["output"].get<std::string>().c_str(),
-                c["seconds"].get<double>(), (long long)c["missed"].get<int64_t>(),
-                (long long)c["hit"].get<int64_t>(), (long long)c["undecided"].get<int64_t>(),
+                c["set"].get<std::string>().c_str(), c["seconds"].get<double>(),
+                (long long)c["missed"].get<int64_t>(), (long long)c["hit"].get<int64_t>(),
+                (long long)c["undecided"].get<int64_t>(),
                 100 * c["undecided_fraction"].get<double>());
         }
         return;
@@ -86,9 +87,12 @@ std::optional<PixelCertificate> certificateFor(const RenderCommandOptions& optio
     return certificate;
 }
 
-Json certificateJson(const RenderCommandOptions& options, const PixelCertificate& c) {
+Json certificateJson(const RenderCommandOptions& options, const Scene& scene,
+                     const PixelCertificate& c) {
     Json json;
     json["output"] = options.certifyOutput.empty() ? Json() : Json(options.certifyOutput);
+    // What the classes are proven against: K_N, or K itself from render.certified's cells.
+    json["set"] = scene.render.certified.empty() ? "K_N" : "K";
     json["missed"] = c.counts.missed;
     json["hit"] = c.counts.hit;
     json["undecided"] = c.counts.undecided;
@@ -172,7 +176,7 @@ int runRenderCommand(const RenderCommandOptions& options) {
         certifyOutput->commit();
     }
     Json extra = Json::object();
-    if (certificate) extra["certificate"] = certificateJson(options, *certificate);
+    if (certificate) extra["certificate"] = certificateJson(options, scene, *certificate);
     printRenderSummary(options, scene, result->stats, extra);
     return 0;
 }

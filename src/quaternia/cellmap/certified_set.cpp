@@ -75,7 +75,8 @@ std::vector<uint8_t> CertifiedSet::encode() const {
     put<uint8_t>(body, uint8_t(space));
     put<uint8_t>(body, uint8_t(algebra));
     put<uint32_t>(body, uint32_t(formula.size()));
-    body.insert(body.end(), formula.begin(), formula.end());
+    for (char ch : formula)
+        put<char>(body, ch);
     for (int k = 0; k < kMaxAlgebraDimension; ++k)
         put<double>(body, c[k]);
     for (int k = 0; k < kMaxAlgebraDimension; ++k)

@@ -1,4 +1,5 @@
 #include "quaternia/render/pixel_certificate.h"
+#include "quaternia/render/true_set_certificate.h"
 
 #include <algorithm>
 #include <chrono>
@@ -255,12 +256,7 @@ class Certifier {
 namespace {
 
 // validateCertificate for the scene's fractal, made once by the caller.
-void validateCertificateOf(const Scene& scene, const Fractal& fractal) {
-    if (auto part = fractal.unprovablePart()) {
-        throw UserError("fractal.formula",
-                        "fractal.formula: " + *part +
-                            " has no interval extension yet, so no pixel can be certified");
-    }
+void requirePinhole(const Scene& scene) {
     if (scene.camera.aperture > 0) {
         throw UserError("camera.aperture",
                         "camera.aperture must be 0 for a certificate: a thin lens's rays share "
@@ -268,14 +264,36 @@ void validateCertificateOf(const Scene& scene, const Fractal& fractal) {
     }
 }
 
+void validateCertificateOf(const Scene& scene, const Fractal& fractal) {
+    if (auto part = fractal.unprovablePart()) {
+        throw UserError("fractal.formula",
+                        "fractal.formula: " + *part +
+                            " has no interval extension yet, so no pixel can be certified");
+    }
+    requirePinhole(scene);
+}
+
 }  // namespace
 
 void validateCertificate(const Scene& scene) {
+    if (!scene.render.certified.empty()) {
+        requirePinhole(scene);
+        certifiedSetOfScene(scene);
+        return;
+    }
     validateCertificateOf(scene, fractalFromScene(scene));
 }
 
 PixelCertificate certifyPixels(const Scene& scene, const WorkOptions& options) {
     validateScene(scene);
+    if (!scene.render.certified.empty()) {
+        // Against K itself (true_set_certificate.h), through the slice of the algebra's own set.
+        requirePinhole(scene);
+        const auto set = certifiedSetOfScene(scene);
+        const Fractal fractal = hypercomplexFractalFromScene(scene);
+        const Camera camera(scene.camera, scene.render.width, scene.render.height);
+        return certifyPixelsAgainstSet(fractal, *set, camera, scene.render.epsilon, options);
+    }
     const Fractal fractal = fractalFromScene(scene);
     validateCertificateOf(scene, fractal);
     const Camera camera(scene.camera, scene.render.width, scene.render.height);

@@ -79,6 +79,10 @@ std::vector<Parameter> renderParameters() {
                         {{"coverage", AlphaMode::Coverage}, {"opaque", AlphaMode::Opaque}},
                         "PNG alpha: coverage (the fraction of samples that hit, background "
                         "transparent) or opaque (composited over the background gradient)"),
+        textParameter("render", "certified", &S::render, &R::certified, "", 0, 4096,
+                      "A cells file of `quaternia certify` for this scene's formula and c: the "
+                      "certificate (--certify, the explorer's Certify) then classifies each "
+                      "pixel against the set K itself instead of K_N; empty: K_N"),
     };
 }
 

@@ -61,6 +61,8 @@ struct RenderSettings {
     AlphaMode alpha = AlphaMode::Coverage;
     RenderEngine engine = RenderEngine::Simd;
     Precision precision = Precision::Single;
+    // A `quaternia certify` cells file (cellmap/certified_set.h); empty: certificates prove K_N.
+    std::string certified;
 };
 
 enum class Shadows { None, Hard, Soft };
