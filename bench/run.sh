@@ -194,6 +194,60 @@ for preset in studio rabbit dendrite basilica cubic two-sided bicomplex coquater
   biquaternion octonion; do
   certified "certify-$preset-360p" --preset "$preset"
 done
+# True sets (issue 40; the goals: the basilica and the rabbit at 4096^2 in at most 15 s with an
+# undecided band at most 3 px wide, 16384^2 in at most 6 minutes, the rabbit's quaternion twin at
+# 512^3 cells in at most 10 minutes and 4 GB): `quaternia certify` runs, each timed whole (the
+# process, PNG or cells file written) with its peak resident memory; medians of the runs given.
+trueset() {  # name, runs, then quaternia certify arguments
+  local name=$1 count=$2; shift 2
+  if [ -n "${rows:-}" ] && ! [[ $name =~ $rows ]]; then return; fi
+  python3 - "$name" "$count" "$binary" "$@" <<'PY'
+import json, resource, statistics, subprocess, sys, time
+name, count, binary, args = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4:]
+runs, walls = [], []
+for _ in range(count):
+    start = time.monotonic()
+    done = subprocess.run([binary, "certify", *args, "--json"], capture_output=True, text=True, check=True)
+    walls.append(time.monotonic() - start)
+    runs.append(json.loads(done.stdout))
+peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024 / 1024
+r = runs[0]
+if r["space"] == "plane":
+    p, b = r["pixels"], r["undecided_band_pixels"]
+    what = "%dx%d  undecided %.3f%%  band median %d p99 %d max %d px  inside %.2f%%" % (
+        r["width"], r["height"], 100 * p["undecided_fraction"], b["median"], b["p99"], b["max"],
+        100 * p["inside"] / (r["width"] * r["height"]))
+else:
+    cells = sum(g["outside"] + g["inside"] + g["undecided"] for g in r["grids"])
+    inside = sum(g["inside"] for g in r["grids"])
+    undecided = sum(g["undecided_volume"] for g in r["grids"]) / sum(
+        g["outside_volume"] + g["inside_volume"] + g["undecided_volume"] for g in r["grids"])
+    what = "%s %d cells/axis  %d leaf cells  inside %d  undecided volume %.3f%%  file %.1f MB" % (
+        r["space"], r["cells_per_axis"], cells, inside, 100 * undecided, r["bytes"] / 1e6)
+print("%-30s %8.2f s whole (%6.2f s cell mapping)  peak %5.2f GB  %s  (median of %d, %d threads)"
+      % (name, statistics.median(walls), statistics.median(x["seconds"] for x in runs), peak,
+         what, len(runs), r["threads"]))
+PY
+}
+julia() { echo "--set" "fractal.c=[$1,$2,0,0]" "--set" "plane.width=$3"; }
+trueset "trueset-basilica-4096" 3 $(julia -1 0 3.4) --width 4096 --height 4096 -o "$out/t.png"
+trueset "trueset-rabbit-4096" 3 $(julia -0.122561 0.744862 3.2) --width 4096 --height 4096 \
+  -o "$out/t.png"
+trueset "trueset-basilica-16384" 1 $(julia -1 0 3.4) --width 16384 --height 16384 -o "$out/t.png"
+trueset "trueset-rabbit-16384" 1 $(julia -0.122561 0.744862 3.2) --width 16384 --height 16384 \
+  -o "$out/t.png"
+trueset "trueset-rabbit-twin-512" 1 --set "fractal.c=[-0.122561,0.744862,0,0]" --resolution 512 \
+  -o "$out/twin.qcells"
+trueset "trueset-default-256" 1 --resolution 256 -o "$out/default.qcells"
+trueset "trueset-bicomplex-4096" 1 --preset bicomplex --resolution 4096 -o "$out/bicomplex.qcells"
+# The picture's certificate against K (render.certified) beside the one against K_N.
+if [ -z "${rows:-}" ] || [[ trueset-render-rabbit-twin-360p =~ $rows ]]; then
+  [ -f "$out/twin.qcells" ] || "$binary" certify --set "fractal.c=[-0.122561,0.744862,0,0]" \
+    --resolution 512 -o "$out/twin.qcells" > /dev/null
+  certified "trueset-render-rabbit-twin-360p" --set "fractal.c=[-0.122561,0.744862,0,0]" \
+    --set "render.certified=\"$out/twin.qcells\""
+  certified "trueset-render-rabbit-twin-KN-360p" --set "fractal.c=[-0.122561,0.744862,0,0]"
+fi
 [ -n "${rows:-}" ] && return 0
 # Films (`quaternia animate`): the hidden-turn preset at 1 sample on 2 threads, frames per second
 # end to end (every PNG written, the process start left out) and of the render loop alone (the

@@ -40,26 +40,34 @@ Box3 cellBox(const CellGrid& grid, int level, const CellIndex& c) {
 // A cell's image at its level, computed once per level: the cells it touches, and whether the
 // cell lies beyond the escape radius or its image leaves the grid.
 struct Image {
-    std::array<int32_t, 3> first{0, 0, 0}, last{0, 0, 0};
-    bool escapes = false;  // every point of the cell escapes
-    bool beyond = false;   // part of the image lies beyond the grid (beyond the escape radius)
-    bool empty = false;    // the whole image lies beyond the grid
+    std::array<int32_t, 3> first{0, 0, 0};
+    std::array<uint8_t, 3> extent{0, 0, 0};  // last - first per axis
+    uint8_t flags = 0;
+    static constexpr uint8_t kEscapes = 1;  // every point of the cell escapes
+    static constexpr uint8_t kBeyond = 2;   // part of the image lies beyond the grid (and R)
+    static constexpr uint8_t kEmpty = 4;    // the whole image lies beyond the grid
+    static constexpr uint8_t kWide = 8;     // wider than 256 cells: nothing is decided from it
+    bool has(uint8_t flag) const { return (flags & flag) != 0; }
 };
 
 Image imageOf(const CellGrid& grid, const BoxMap& map, int level, const CellIndex& c) {
     Image image;
     const Box3 box = cellBox(grid, level, c);
     if (map.escapes(box)) {
-        image.escapes = true;
+        image.flags = Image::kEscapes;
         return image;
     }
     const Box3 mapped = map.image(box);
     for (int a = 0; a < grid.dimension(); ++a) {
         const AxisRange r = grid.cellsTouched(level, a, mapped[a]);
-        image.beyond = image.beyond || r.beyond;
-        image.empty = image.empty || r.first > r.last;
+        if (r.beyond) image.flags |= Image::kBeyond;
+        if (r.first > r.last) {
+            image.flags |= Image::kEmpty;
+            continue;
+        }
+        if (r.last - r.first > 255) image.flags |= Image::kWide;
         image.first[size_t(a)] = int32_t(r.first);
-        image.last[size_t(a)] = int32_t(r.last);
+        image.extent[size_t(a)] = uint8_t(std::min<int64_t>(255, r.last - r.first));
     }
     return image;
 }
@@ -67,19 +75,20 @@ Image imageOf(const CellGrid& grid, const BoxMap& map, int level, const CellInde
 template <typename Visit>
 bool visitImage(const CellGrid& grid, int level, const Image& image, Visit&& visit) {
     return grid.visitCells(level, {image.first[0], image.first[1], image.first[2]},
-                           {image.last[0], image.last[1], image.last[2]}, visit);
+                           {image.first[0] + image.extent[0], image.first[1] + image.extent[1],
+                            image.first[2] + image.extent[2]},
+                           visit);
 }
 
 bool cancelled(const WorkOptions& work) {
     return work.cancel && work.cancel->load(std::memory_order_relaxed);
 }
 
-// Sweeps `active` until a sweep changes no cell: test(n, cell) returns true where the cell
-// moved to its new value (it wrote it). Cells that moved leave the list (and their images
-// `images`). Returns the sweep count, or -1 if cancelled.
+// Sweeps the cells numbered `active` until a sweep changes none: test(n) returns true where
+// cell n moved to its new value (it wrote it). Cells that moved leave the list. Returns the
+// sweep count, or -1 if cancelled.
 template <typename Test>
-int sweepToFixedPoint(std::vector<CellKey>& active, std::vector<Image>& images,
-                      const WorkOptions& work, Test&& test) {
+int sweepToFixedPoint(std::vector<int32_t>& active, const WorkOptions& work, Test&& test) {
     int sweeps = 0;
     std::vector<uint8_t> moved;
     while (!active.empty()) {
@@ -93,18 +102,14 @@ int sweepToFixedPoint(std::vector<CellKey>& active, std::vector<Image>& images,
         parallelFor(int64_t(active.size()), parallel, [&](int64_t begin, int64_t end, int) {
             int64_t local = 0;
             for (int64_t n = begin; n < end; ++n)
-                if (test(size_t(n), indexOf(active[size_t(n)]))) moved[size_t(n)] = 1, ++local;
+                if (test(size_t(active[size_t(n)]))) moved[size_t(n)] = 1, ++local;
             changes += local;
         });
         if (changes.load() == 0) break;
         size_t kept = 0;
         for (size_t n = 0; n < active.size(); ++n)
-            if (!moved[n]) {
-                active[kept] = active[n];
-                images[kept++] = images[n];
-            }
+            if (!moved[n]) active[kept++] = active[n];
         active.resize(kept);
-        images.resize(kept);
     }
     return sweeps;
 }
@@ -134,9 +139,9 @@ int64_t growToFixedPoint(CellGrid& grid, int level, const std::vector<CellKey>& 
         const Image& image = images[size_t(n)];
         int32_t blocker = -1;
         bool ok;
-        if (outsideRules && (image.escapes || image.empty)) {
+        if (outsideRules && (image.has(Image::kEscapes) || image.has(Image::kEmpty))) {
             ok = true;
-        } else if (!outsideRules && image.beyond) {
+        } else if (image.has(Image::kWide) || (!outsideRules && image.has(Image::kBeyond))) {
             ok = false;
         } else {
             ok = visitImage(grid, level, image, [&](const CellIndex& touched, uint8_t v) {
@@ -220,16 +225,16 @@ CellMappingReport classifyCells(CellGrid& grid, const BoxMap& map,
         if (growToFixedPoint(grid, level, undecided, images, state, slots, outsideValue, true,
                              options.work) < 0)
             break;
-        std::vector<CellKey> active;
-        std::vector<Image> activeImages;
+        // The cells left, by number.
+        std::vector<int32_t> active;
         for (size_t n = 0; n < undecided.size(); ++n) {
             if (state[n] == kReached) {
                 state[n] = kExcluded;  // outside: never inside
                 continue;
             }
-            active.push_back(undecided[n]);
-            activeImages.push_back(images[n]);
+            active.push_back(int32_t(n));
         }
+        stats.outside = stats.cells - int64_t(active.size());
 
         // Inside. Where the level has few cells or no inside was found yet, the greatest fixed
         // point over the cells left, all candidates at first: it finds every trapped region.
@@ -237,40 +242,38 @@ CellMappingReport classifyCells(CellGrid& grid, const BoxMap& map,
         // (as the outside grows from the escape region), which tests each cell about once per
         // blocker instead of once per sweep.
         const auto insideValue = uint8_t(CellClass::kInside);
-        std::vector<CellKey> candidates;
         if (active.size() <= kGreatestFixedPointCells || !foundInside) {
-            candidates = active;
-            for (CellKey key : active)
-                store(indexOf(key), kCandidate);
-            stats.insideSweeps = sweepToFixedPoint(
-                candidates, activeImages, options.work, [&](size_t n, const CellIndex& c) {
-                    const Image& image = activeImages[n];
-                    const bool stays =
-                        !image.beyond &&
-                        visitImage(grid, level, image, [&](const CellIndex&, uint8_t v) {
-                            return v == insideValue || v == kCandidate;
-                        });
-                    if (!stays) store(c, uint8_t(CellClass::kUndecided));
-                    return !stays;
-                });
+            std::vector<int32_t> candidates = active;
+            for (int32_t n : active)
+                store(indexOf(undecided[size_t(n)]), kCandidate);
+            stats.insideSweeps = sweepToFixedPoint(candidates, options.work, [&](size_t n) {
+                const Image& image = images[n];
+                const bool stays = !image.has(Image::kBeyond) && !image.has(Image::kWide) &&
+                                   visitImage(grid, level, image, [&](const CellIndex&, uint8_t v) {
+                                       return v == insideValue || v == kCandidate;
+                                   });
+                if (!stays) store(indexOf(undecided[n]), uint8_t(CellClass::kUndecided));
+                return !stays;
+            });
             if (stats.insideSweeps < 0) break;
-            for (CellKey key : candidates)
-                store(indexOf(key), insideValue);
+            for (int32_t n : candidates)
+                store(indexOf(undecided[size_t(n)]), insideValue);
+            stats.inside = int64_t(candidates.size());
         } else {
-            if (growToFixedPoint(grid, level, undecided, images, state, slots, insideValue, false,
-                                 options.work) < 0)
-                break;
-            for (size_t n = 0; n < undecided.size(); ++n)
-                if (state[n] == kReached) candidates.push_back(undecided[n]);
+            const int64_t grown = growToFixedPoint(grid, level, undecided, images, state, slots,
+                                                   insideValue, false, options.work);
+            if (grown < 0) break;
+            stats.inside = grown;
         }
-        stats.inside = int64_t(candidates.size());
         foundInside = foundInside || stats.inside > 0;
-        stats.outside = stats.cells - int64_t(active.size());
+        images = std::vector<Image>();
+        slots = std::vector<int32_t>();
+        state = std::vector<uint8_t>();
 
         // Undecided: refined where the options say.
         std::vector<CellKey> next;
-        for (CellKey key : active) {
-            const CellIndex c = indexOf(key);
+        for (int32_t n : active) {
+            const CellIndex c = indexOf(undecided[size_t(n)]);
             if (grid.valueAt(level, c) != uint8_t(CellClass::kUndecided)) continue;
             ++stats.undecided;
             if (level >= options.finestLevel) continue;
