@@ -101,9 +101,14 @@ PlaneCells certifyPlaneCells(const Scene& scene, const WorkOptions& work,
 
     // Refinement: every undecided cell that touches the view, down to the pixels; beyond the
     // view down to kOutsideCells across the disc.
+    // (down to the finest cells where the whole grid then has at most kOutsideCells across: a
+    // trapped region beyond the view, about an attracting cycle, may need them)
+    const auto cellsAcross = [&](int level) {
+        const int64_t pixels = std::max(cellsU, cellsV);
+        return level <= levels ? pixels >> (levels - level) : pixels << (level - levels);
+    };
     int outsideLevel = 0;
-    while (outsideLevel < levels &&
-           (std::max(cellsU, cellsV) >> (levels - outsideLevel)) * 2 <= kOutsideCells)
+    while (outsideLevel < finest && cellsAcross(outsideLevel + 1) <= kOutsideCells)
         ++outsideLevel;
     CellMappingOptions options;
     options.finestLevel = finest;
