@@ -204,6 +204,50 @@ CellClass CellGrid::classOfBox(const std::array<Interval, 3>& box, bool beyondIs
     return classOfBoxAt(0, {0, 0, 0}, box, sawInside, sawOutside);
 }
 
+void CellGrid::classesInBoxAt(int level, const CellIndex& origin,
+                              const std::array<Interval, 3>& box, uint8_t& classes) const {
+    std::array<AxisRange, 3> ranges{};
+    for (int a = 0; a < 3; ++a) {
+        if (a >= dimension_) {
+            ranges[a] = {0, 0, false};
+            continue;
+        }
+        const int64_t span = level == 0 ? cells0_[a] : 2;
+        AxisRange r = cellsTouched(level, a, box[a]);
+        r.first = std::max(r.first, origin[a]);
+        r.last = std::min(r.last, origin[a] + span - 1);
+        ranges[a] = r;
+    }
+    constexpr uint8_t all = kHasOutside | kHasInside | kHasUndecided;
+    for (int64_t k = ranges[2].first; k <= ranges[2].last && classes != all; ++k)
+        for (int64_t j = ranges[1].first; j <= ranges[1].last && classes != all; ++j)
+            for (int64_t i = ranges[0].first; i <= ranges[0].last && classes != all; ++i) {
+                const uint8_t v = valueAt(level, {i, j, k});
+                if (v == kRefined && level + 1 < levels())
+                    classesInBoxAt(level + 1,
+                                   {2 * i, dimension_ > 1 ? 2 * j : 0, dimension_ > 2 ? 2 * k : 0},
+                                   box, classes);
+                else if (v == uint8_t(CellClass::kInside))
+                    classes |= kHasInside;
+                else if (v == uint8_t(CellClass::kOutside))
+                    classes |= kHasOutside;
+                else
+                    classes |= kHasUndecided;
+            }
+}
+
+uint8_t CellGrid::classesInBox(const std::array<Interval, 3>& box, bool beyondIsOutside) const {
+    uint8_t classes = 0;
+    bool anyCell = true;
+    for (int a = 0; a < dimension_; ++a) {
+        const AxisRange r = cellsTouched(0, a, box[a]);
+        if (r.beyond) classes |= beyondIsOutside ? kHasOutside : kHasUndecided;
+        anyCell = anyCell && r.first <= r.last;
+    }
+    if (anyCell) classesInBoxAt(0, {0, 0, 0}, box, classes);
+    return classes;
+}
+
 CellGrid::Census CellGrid::census() const {
     Census census;
     for (int l = 0; l < levels(); ++l) {

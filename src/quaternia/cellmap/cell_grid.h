@@ -138,6 +138,11 @@ class CellGrid {
     // `beyondIsOutside` (the grid holds the escape ball), else makes the box undecided. Walks
     // the pyramid from level 0, descending only into refined cells.
     CellClass classOfBox(const std::array<Interval, 3>& box, bool beyondIsOutside) const;
+    // The classes of the leaf cells the box touches, as bits kHasOutside | kHasInside |
+    // kHasUndecided (beyond the grid as classOfBox): whether a box that is not all one class
+    // may still hold an inside point.
+    static constexpr uint8_t kHasOutside = 1, kHasInside = 2, kHasUndecided = 4;
+    uint8_t classesInBox(const std::array<Interval, 3>& box, bool beyondIsOutside) const;
 
     // Counts of the leaf cells per class, and their volumes (area in 2D) in grid units.
     struct Census {
@@ -194,6 +199,8 @@ class CellGrid {
     uint8_t ancestorValue(int level, const CellIndex& cell) const;
     void addLevel();
     uint8_t* allocateTile(int level, const CellIndex& tile);
+    void classesInBoxAt(int level, const CellIndex& origin, const std::array<Interval, 3>& box,
+                        uint8_t& classes) const;
     CellClass classOfBoxAt(int level, const CellIndex& cell, const std::array<Interval, 3>& box,
                            bool& sawInside, bool& sawOutside) const;
 

@@ -39,6 +39,19 @@ Interval pointInterval(double x) {
 
 }  // namespace
 
+// x = Re z, a = <Im z, n>, r = |Im z - a n| (certified_set.h), enclosed componentwise.
+std::array<Interval, 3> CertifiedSet::reducedBox(const Interval* box, int dimension) const {
+    Interval a = pointInterval(0);
+    for (int k = 1; k < dimension; ++k)
+        if (axis[k] != 0) a = a + axis[k] * box[k];
+    Interval rSquared = pointInterval(0);
+    for (int k = 1; k < dimension; ++k)
+        rSquared = rSquared + square(box[k] - axis[k] * a);
+    const Interval r{std::max(0.0, roundedDown(std::sqrt(std::max(0.0, rSquared.lo)))),
+                     roundedUp(std::sqrt(std::max(0.0, rSquared.hi)))};
+    return {box[0], a, r};
+}
+
 CellClass CertifiedSet::classOfBox(const Interval* box, int dimension) const {
     if (space == CertifiedSpace::kProduct) {
         // duplexForm: ((z0 - z3) + (z1 + z2) i, (z0 + z3) + (z1 - z2) i)
@@ -51,16 +64,19 @@ CellClass CertifiedSet::classOfBox(const Interval* box, int dimension) const {
         return a == CellClass::kInside && b == CellClass::kInside ? CellClass::kInside
                                                                   : CellClass::kUndecided;
     }
-    // x = Re z, a = <Im z, n>, r = |Im z - a n| (certified_set.h), enclosed componentwise.
-    Interval a = pointInterval(0);
-    for (int k = 1; k < dimension; ++k)
-        if (axis[k] != 0) a = a + axis[k] * box[k];
-    Interval rSquared = pointInterval(0);
-    for (int k = 1; k < dimension; ++k)
-        rSquared = rSquared + square(box[k] - axis[k] * a);
-    const Interval r{std::max(0.0, roundedDown(std::sqrt(std::max(0.0, rSquared.lo)))),
-                     roundedUp(std::sqrt(std::max(0.0, rSquared.hi)))};
-    return grids[0].classOfBox({box[0], a, r}, true);
+    return grids[0].classOfBox(reducedBox(box, dimension), true);
+}
+
+uint8_t CertifiedSet::classesOfBox(const Interval* box, int dimension) const {
+    if (space == CertifiedSpace::kProduct) {
+        const uint8_t a = grids[0].classesInBox({box[0] - box[3], box[1] + box[2], {}}, true);
+        const uint8_t b = grids[1].classesInBox({box[0] + box[3], box[1] - box[2], {}}, true);
+        if (a == CellGrid::kHasOutside || b == CellGrid::kHasOutside) return CellGrid::kHasOutside;
+        if (a == CellGrid::kHasInside && b == CellGrid::kHasInside) return CellGrid::kHasInside;
+        return uint8_t(CellGrid::kHasUndecided | CellGrid::kHasOutside |
+                       ((a & b & CellGrid::kHasInside) ? CellGrid::kHasInside : 0));
+    }
+    return grids[0].classesInBox(reducedBox(box, dimension), true);
 }
 
 CellClass CertifiedSet::classOfPoint(const Hypercomplex& z, int dimension) const {

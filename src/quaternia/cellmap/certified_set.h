@@ -38,6 +38,10 @@ struct CertifiedSet {
     // undecided. Points beyond the grids are outside (the grids hold the escape ball).
     CellClass classOfBox(const Interval* box, int dimension) const;
     CellClass classOfPoint(const Hypercomplex& z, int dimension) const;
+    // Which classes the box's points may have (CellGrid::classesInBox's bits): kHasOutside
+    // alone where all are outside, kHasInside alone where all are inside, and kHasInside among
+    // others where some inside cell is touched.
+    uint8_t classesOfBox(const Interval* box, int dimension) const;
 
     // The file: a magic line, then the set zlib-compressed.
     std::vector<uint8_t> encode() const;
@@ -45,6 +49,9 @@ struct CertifiedSet {
     static CertifiedSet decode(const std::vector<uint8_t>& bytes, const std::string& key,
                                const std::string& name = "");
     static CertifiedSet read(const std::string& path, const std::string& key);
+
+  private:
+    std::array<Interval, 3> reducedBox(const Interval* box, int dimension) const;
 };
 
 }  // namespace quaternia

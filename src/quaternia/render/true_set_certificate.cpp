@@ -93,7 +93,7 @@ class TrueSetCertifier {
         }
     }
 
-    CellClass classOfPiece(const Walk& walk, double t0, double t1) const {
+    uint8_t classesOfPiece(const Walk& walk, double t0, double t1) const {
         std::array<Interval, 3> box;
         const double radius = walk.slope * t1 * (1 + 1e-9) + 1e-12;
         for (int i = 0; i < 3; ++i) {
@@ -105,7 +105,7 @@ class TrueSetCertifier {
         }
         Interval algebra[kMaxAlgebraDimension];
         algebraBox(box, algebra);
-        return set_.classOfBox(algebra, dimension_);
+        return set_.classesOfBox(algebra, dimension_);
     }
 
     CellClass classOfRayPoint(const Walk& walk, double t) const {
@@ -120,15 +120,17 @@ class TrueSetCertifier {
         return set_.classOfBox(algebra, dimension_);
     }
 
-    // Front to back through [t0, t1]: stops at the first proven point of K.
+    // Front to back through [t0, t1]: stops at the first proven point of K. A piece that
+    // touches no inside cell holds no provable point: it is not cut further.
     void visit(Walk& walk, double t0, double t1) const {
-        const CellClass c = classOfPiece(walk, t0, t1);
-        if (c == CellClass::kOutside) return;
+        const uint8_t classes = classesOfPiece(walk, t0, t1);
+        if (classes == CellGrid::kHasOutside) return;
         if (!walk.blocked) walk.nearest = t0, walk.blocked = true;
-        if (c == CellClass::kInside) {
+        if (classes == CellGrid::kHasInside) {
             walk.hit = true, walk.farthest = t0;
             return;
         }
+        if (!(classes & CellGrid::kHasInside)) return;
         if (t1 - t0 > minimumPiece_) {
             const double middle = 0.5 * (t0 + t1);
             visit(walk, t0, middle);

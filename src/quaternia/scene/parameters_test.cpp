@@ -63,7 +63,7 @@ ParameterValue alternativeValue(const Parameter& p) {
 
 TEST(ParameterTable, HasEveryKeyOnceGroupedBySection) {
     const auto& table = parameterTable();
-    EXPECT_EQ(table.size(), 196u);  // every field of Scene (scene.h) but the animation keys
+    EXPECT_EQ(table.size(), 197u);  // every field of Scene (scene.h) but the animation keys
     std::set<std::string> names;
     for (const auto& p : table) {
         EXPECT_TRUE(names.insert(p.name()).second) << p.name() << " is declared twice";
