@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstring>
+
 #include <stdexcept>
+#include "quaternia/cellmap/byte_record.h"
 
 namespace quaternia {
 namespace {
@@ -147,9 +149,8 @@ void CellGrid::refine(int level, const CellIndex& cell) {
                     uint8_t(CellClass::kUndecided);
 }
 
-CellClass CellGrid::classOfBoxAt(int level, const CellIndex& origin,
-                                 const std::array<Interval, 3>& box, bool& sawInside,
-                                 bool& sawOutside) const {
+std::array<AxisRange, 3> CellGrid::rangesUnder(int level, const CellIndex& origin,
+                                               const std::array<Interval, 3>& box) const {
     // The cells of `level` under `origin`'s parent region that the box touches: origin is the
     // first child (or, at level 0, the grid's first cell) and the region 2 (or n0) cells wide.
     std::array<AxisRange, 3> ranges{};
@@ -164,6 +165,13 @@ CellClass CellGrid::classOfBoxAt(int level, const CellIndex& origin,
         r.last = std::min(r.last, origin[a] + span - 1);
         ranges[a] = r;
     }
+    return ranges;
+}
+
+CellClass CellGrid::classOfBoxAt(int level, const CellIndex& origin,
+                                 const std::array<Interval, 3>& box, bool& sawInside,
+                                 bool& sawOutside) const {
+    const std::array<AxisRange, 3> ranges = rangesUnder(level, origin, box);
     for (int64_t k = ranges[2].first; k <= ranges[2].last; ++k)
         for (int64_t j = ranges[1].first; j <= ranges[1].last; ++j)
             for (int64_t i = ranges[0].first; i <= ranges[0].last; ++i) {
@@ -206,18 +214,7 @@ CellClass CellGrid::classOfBox(const std::array<Interval, 3>& box, bool beyondIs
 
 void CellGrid::classesInBoxAt(int level, const CellIndex& origin,
                               const std::array<Interval, 3>& box, uint8_t& classes) const {
-    std::array<AxisRange, 3> ranges{};
-    for (int a = 0; a < 3; ++a) {
-        if (a >= dimension_) {
-            ranges[a] = {0, 0, false};
-            continue;
-        }
-        const int64_t span = level == 0 ? cells0_[a] : 2;
-        AxisRange r = cellsTouched(level, a, box[a]);
-        r.first = std::max(r.first, origin[a]);
-        r.last = std::min(r.last, origin[a] + span - 1);
-        ranges[a] = r;
-    }
+    const std::array<AxisRange, 3> ranges = rangesUnder(level, origin, box);
     constexpr uint8_t all = kHasOutside | kHasInside | kHasUndecided;
     for (int64_t k = ranges[2].first; k <= ranges[2].last && classes != all; ++k)
         for (int64_t j = ranges[1].first; j <= ranges[1].last && classes != all; ++j)
@@ -300,39 +297,19 @@ uint64_t CellGrid::memoryBytes() const {
     return bytes;
 }
 
-namespace {
-
-template <typename T>
-void put(std::vector<uint8_t>& out, T value) {
-    const size_t at = out.size();
-    out.resize(at + sizeof(T));
-    std::memcpy(out.data() + at, &value, sizeof(T));
-}
-
-template <typename T>
-T take(const uint8_t*& at, const uint8_t* end) {
-    if (end - at < ptrdiff_t(sizeof(T))) throw std::runtime_error("truncated cell grid");
-    T value;
-    std::memcpy(&value, at, sizeof(T));
-    at += sizeof(T);
-    return value;
-}
-
-}  // namespace
-
 void CellGrid::appendTo(std::vector<uint8_t>& out) const {
-    put<int32_t>(out, dimension_);
-    put<int32_t>(out, levels());
+    appendValue<int32_t>(out, dimension_);
+    appendValue<int32_t>(out, levels());
     for (int a = 0; a < 3; ++a) {
-        put<double>(out, lower_[a]);
-        put<double>(out, size0_[a]);
-        put<int64_t>(out, cells0_[a]);
+        appendValue<double>(out, lower_[a]);
+        appendValue<double>(out, size0_[a]);
+        appendValue<int64_t>(out, cells0_[a]);
     }
     for (const Level& level : levels_) {
-        put<uint64_t>(out, level.tiles.size());
+        appendValue<uint64_t>(out, level.tiles.size());
         for (size_t t = 0; t < level.tiles.size(); ++t) {
             for (int a = 0; a < 3; ++a)
-                put<int64_t>(out, level.tileOrigins[t][a]);
+                appendValue<int64_t>(out, level.tileOrigins[t][a]);
             const size_t at = out.size();
             out.resize(at + size_t(tileCells()));
             std::memcpy(out.data() + at, level.tiles[t].get(), size_t(tileCells()));
@@ -342,26 +319,26 @@ void CellGrid::appendTo(std::vector<uint8_t>& out) const {
 
 CellGrid CellGrid::readFrom(const uint8_t*& at, const uint8_t* end) {
     CellGrid grid;
-    grid.dimension_ = take<int32_t>(at, end);
-    const int levels = take<int32_t>(at, end);
+    grid.dimension_ = takeValue<int32_t>(at, end);
+    const int levels = takeValue<int32_t>(at, end);
     if ((grid.dimension_ != 2 && grid.dimension_ != 3) || levels < 1 || levels > 40)
         throw std::runtime_error("bad cell grid header");
     for (int a = 0; a < 3; ++a) {
-        grid.lower_[a] = take<double>(at, end);
-        grid.size0_[a] = take<double>(at, end);
-        grid.cells0_[a] = take<int64_t>(at, end);
+        grid.lower_[a] = takeValue<double>(at, end);
+        grid.size0_[a] = takeValue<double>(at, end);
+        grid.cells0_[a] = takeValue<int64_t>(at, end);
         if (!(grid.size0_[a] > 0) || grid.cells0_[a] < 1 || grid.cells0_[a] > (int64_t(1) << 20))
             throw std::runtime_error("bad cell grid geometry");
     }
     for (int l = 0; l < levels; ++l) {
         grid.addLevel();
-        const uint64_t tiles = take<uint64_t>(at, end);
+        const uint64_t tiles = takeValue<uint64_t>(at, end);
         if (tiles > uint64_t(end - at) / uint64_t(grid.tileCells()))
             throw std::runtime_error("truncated cell grid");
         for (uint64_t t = 0; t < tiles; ++t) {
             CellIndex origin{};
             for (int a = 0; a < 3; ++a) {
-                origin[a] = take<int64_t>(at, end);
+                origin[a] = takeValue<int64_t>(at, end);
                 if (origin[a] < 0 || origin[a] >= grid.levels_[size_t(l)].tilesPerAxis[a])
                     throw std::runtime_error("bad tile position");
             }

@@ -107,15 +107,8 @@ class CellGrid {
     // exist.
     int64_t cellSlot(int level, const CellIndex& cell) const {
         const int bits = tileBits();
-        const Level& l = levels_[size_t(level)];
-        const uint64_t key = tileKey(l, {cell[0] >> bits, cell[1] >> bits, cell[2] >> bits});
-        uint32_t number = 0;
-        if (!l.dense.empty()) {
-            number = l.dense[key];
-        } else {
-            auto found = l.sparse.find(key);
-            if (found != l.sparse.end()) number = found->second;
-        }
+        const uint32_t number =
+            tileNumber(level, {cell[0] >> bits, cell[1] >> bits, cell[2] >> bits});
         return number ? int64_t(number - 1) * tileCells() + int64_t(offsetInTile(cell)) : -1;
     }
     int64_t slotCount(int level) const {
@@ -178,17 +171,17 @@ class CellGrid {
                uint64_t(level.tilesPerAxis[0]) *
                    (uint64_t(tile[1]) + uint64_t(level.tilesPerAxis[1]) * uint64_t(tile[2]));
     }
-    const uint8_t* tileOf(int level, const CellIndex& tile) const {
+    // The tile's number + 1 in its level's list, 0 where it does not exist.
+    uint32_t tileNumber(int level, const CellIndex& tile) const {
         const Level& l = levels_[size_t(level)];
         const uint64_t key = tileKey(l, tile);
-        uint32_t number = 0;
-        if (!l.dense.empty()) {
-            number = l.dense[key];
-        } else {
-            auto found = l.sparse.find(key);
-            if (found != l.sparse.end()) number = found->second;
-        }
-        return number ? l.tiles[number - 1].get() : nullptr;
+        if (!l.dense.empty()) return l.dense[key];
+        auto found = l.sparse.find(key);
+        return found != l.sparse.end() ? found->second : 0;
+    }
+    const uint8_t* tileOf(int level, const CellIndex& tile) const {
+        const uint32_t number = tileNumber(level, tile);
+        return number ? levels_[size_t(level)].tiles[number - 1].get() : nullptr;
     }
     size_t offsetInTile(const CellIndex& cell) const {
         const int bits = tileBits();
@@ -199,6 +192,8 @@ class CellGrid {
     uint8_t ancestorValue(int level, const CellIndex& cell) const;
     void addLevel();
     uint8_t* allocateTile(int level, const CellIndex& tile);
+    std::array<AxisRange, 3> rangesUnder(int level, const CellIndex& origin,
+                                         const std::array<Interval, 3>& box) const;
     void classesInBoxAt(int level, const CellIndex& origin, const std::array<Interval, 3>& box,
                         uint8_t& classes) const;
     CellClass classOfBoxAt(int level, const CellIndex& cell, const std::array<Interval, 3>& box,

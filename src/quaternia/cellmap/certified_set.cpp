@@ -3,9 +3,11 @@
 #include <zlib.h>
 
 #include <cstring>
+
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
+#include "quaternia/cellmap/byte_record.h"
 
 #include "quaternia/util/error.h"
 
@@ -16,22 +18,6 @@ constexpr char kMagic[] = "QUATERNIA-CELLS 1\n";
 constexpr size_t kMagicLength = sizeof(kMagic) - 1;
 // A decoded set larger than this is refused (a damaged or hostile size field).
 constexpr uint64_t kMaxDecodedBytes = uint64_t(8) << 30;
-
-template <typename T>
-void put(std::vector<uint8_t>& out, T value) {
-    const size_t at = out.size();
-    out.resize(at + sizeof(T));
-    std::memcpy(out.data() + at, &value, sizeof(T));
-}
-
-template <typename T>
-T take(const uint8_t*& at, const uint8_t* end) {
-    if (end - at < ptrdiff_t(sizeof(T))) throw std::runtime_error("truncated");
-    T value;
-    std::memcpy(&value, at, sizeof(T));
-    at += sizeof(T);
-    return value;
-}
 
 Interval pointInterval(double x) {
     return Interval::point(x);
@@ -88,28 +74,28 @@ CellClass CertifiedSet::classOfPoint(const Hypercomplex& z, int dimension) const
 
 std::vector<uint8_t> CertifiedSet::encode() const {
     std::vector<uint8_t> body;
-    put<uint8_t>(body, uint8_t(space));
-    put<uint8_t>(body, uint8_t(algebra));
-    put<uint32_t>(body, uint32_t(formula.size()));
+    appendValue<uint8_t>(body, uint8_t(space));
+    appendValue<uint8_t>(body, uint8_t(algebra));
+    appendValue<uint32_t>(body, uint32_t(formula.size()));
     for (char ch : formula)
-        put<char>(body, ch);
+        appendValue<char>(body, ch);
     for (int k = 0; k < kMaxAlgebraDimension; ++k)
-        put<double>(body, c[k]);
+        appendValue<double>(body, c[k]);
     for (int k = 0; k < kMaxAlgebraDimension; ++k)
-        put<double>(body, axis[k]);
-    put<double>(body, realConstant);
-    put<double>(body, imaginaryConstant);
-    put<double>(body, escapeRadius);
-    put<uint32_t>(body, uint32_t(coefficients.size()));
+        appendValue<double>(body, axis[k]);
+    appendValue<double>(body, realConstant);
+    appendValue<double>(body, imaginaryConstant);
+    appendValue<double>(body, escapeRadius);
+    appendValue<uint32_t>(body, uint32_t(coefficients.size()));
     for (double a : coefficients)
-        put<double>(body, a);
-    put<uint32_t>(body, uint32_t(grids.size()));
+        appendValue<double>(body, a);
+    appendValue<uint32_t>(body, uint32_t(grids.size()));
     for (const CellGrid& grid : grids)
         grid.appendTo(body);
 
     uLongf packedSize = compressBound(uLong(body.size()));
     std::vector<uint8_t> out(kMagic, kMagic + kMagicLength);
-    put<uint64_t>(out, body.size());
+    appendValue<uint64_t>(out, body.size());
     const size_t at = out.size();
     out.resize(at + packedSize);
     if (compress2(out.data() + at, &packedSize, body.data(), uLong(body.size()), 6) != Z_OK)
@@ -140,29 +126,29 @@ CertifiedSet CertifiedSet::decode(const std::vector<uint8_t>& bytes, const std::
     try {
         const uint8_t* p = body.data();
         const uint8_t* end = p + body.size();
-        const uint8_t space = take<uint8_t>(p, end), algebra = take<uint8_t>(p, end);
+        const uint8_t space = takeValue<uint8_t>(p, end), algebra = takeValue<uint8_t>(p, end);
         if (space != uint8_t(CertifiedSpace::kReduced) &&
             space != uint8_t(CertifiedSpace::kProduct))
             throw std::runtime_error("unknown space");
         if (algebra > uint8_t(Algebra::kOctonion)) throw std::runtime_error("unknown algebra");
         set.space = CertifiedSpace(space);
         set.algebra = Algebra(algebra);
-        const uint32_t length = take<uint32_t>(p, end);
+        const uint32_t length = takeValue<uint32_t>(p, end);
         if (length > uint32_t(end - p)) throw std::runtime_error("truncated");
         set.formula.assign(reinterpret_cast<const char*>(p), length);
         p += length;
         for (int k = 0; k < kMaxAlgebraDimension; ++k)
-            set.c[k] = take<double>(p, end);
+            set.c[k] = takeValue<double>(p, end);
         for (int k = 0; k < kMaxAlgebraDimension; ++k)
-            set.axis[k] = take<double>(p, end);
-        set.realConstant = take<double>(p, end);
-        set.imaginaryConstant = take<double>(p, end);
-        set.escapeRadius = take<double>(p, end);
-        const uint32_t count = take<uint32_t>(p, end);
+            set.axis[k] = takeValue<double>(p, end);
+        set.realConstant = takeValue<double>(p, end);
+        set.imaginaryConstant = takeValue<double>(p, end);
+        set.escapeRadius = takeValue<double>(p, end);
+        const uint32_t count = takeValue<uint32_t>(p, end);
         if (count > 64) throw std::runtime_error("too many coefficients");
         for (uint32_t n = 0; n < count; ++n)
-            set.coefficients.push_back(take<double>(p, end));
-        const uint32_t grids = take<uint32_t>(p, end);
+            set.coefficients.push_back(takeValue<double>(p, end));
+        const uint32_t grids = takeValue<uint32_t>(p, end);
         const uint32_t expected = set.space == CertifiedSpace::kReduced ? 1 : 2;
         const int dimension = set.space == CertifiedSpace::kReduced ? 3 : 2;
         if (grids != expected) throw std::runtime_error("wrong number of grids");

@@ -10,6 +10,7 @@
 #include "quaternia/algebra/test_helpers.h"
 #include "quaternia/image/plane_view.h"
 #include "quaternia/plane/plane_render.h"
+#include "quaternia/plane/plane_test_scenes.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_file.h"
 
@@ -19,22 +20,12 @@ namespace {
 using testing::thrownError;
 using Complex = std::complex<double>;
 
-const std::vector<double> kBasilica = {-1, 0, 0, 0};
-const std::vector<double> kRabbit = {-0.122561, 0.744862, 0, 0};
-
-WorkOptions onThreads(int threads) {
-    WorkOptions options;
-    options.threads = threads;
-    return options;
-}
+using testing::kBasilica;
+using testing::kRabbit;
+using testing::onThreads;
 
 Scene planeScene(const std::string& kind, std::vector<double> c, int width, int height) {
-    Scene scene = defaultScene();
-    setParameter(scene, "plane.kind", kind);
-    setParameter(scene, "fractal.c", c);
-    setParameter(scene, "render.width", int64_t{width});
-    setParameter(scene, "render.height", int64_t{height});
-    setParameter(scene, "render.samples", int64_t{1});
+    Scene scene = testing::planeTestScene(kind, c, width, height);
     setParameter(scene, "plane.width", 3.4);
     return scene;
 }

@@ -319,17 +319,22 @@ PixelCertificate certifyPixels(const Fractal& fractal, const Camera& camera, dou
         });
     for (int64_t p : proofs)
         out.proofs += p;
-    for (uint8_t c : out.classes) {
-        if (c == uint8_t(PixelClass::kMissed))
-            ++out.counts.missed;
-        else if (c == uint8_t(PixelClass::kHit))
-            ++out.counts.hit;
-        else
-            ++out.counts.undecided;
-    }
+    tallyClasses(out);
     out.threads = resolveThreadCount(parallel.threads);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
+}
+
+void tallyClasses(PixelCertificate& certificate) {
+    certificate.counts = {};
+    for (uint8_t c : certificate.classes) {
+        if (c == uint8_t(PixelClass::kMissed))
+            ++certificate.counts.missed;
+        else if (c == uint8_t(PixelClass::kHit))
+            ++certificate.counts.hit;
+        else
+            ++certificate.counts.undecided;
+    }
 }
 
 void tintUndecided(Image& image, const PixelCertificate& certificate) {

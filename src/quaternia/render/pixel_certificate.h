@@ -79,6 +79,9 @@ PixelCertificate certifyPixels(const Scene& scene, const WorkOptions& options = 
 PixelCertificate certifyPixels(const Fractal& fractal, const Camera& camera, double epsilon,
                                const WorkOptions& options = {});
 
+// Sets certificate.counts from its classes.
+void tallyClasses(PixelCertificate& certificate);
+
 // The undecided pixels of `image` (display values, the certificate's size) mixed halfway
 // with magenta, opaque: where the picture is not proven.
 void tintUndecided(Image& image, const PixelCertificate& certificate);

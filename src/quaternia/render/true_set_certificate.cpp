@@ -209,14 +209,7 @@ PixelCertificate certifyPixelsAgainstSet(const Fractal& fractal, const Certified
             for (int x = tile.x0; x < tile.x1; ++x)
                 certifier.certifyPixel(x, y, out);
     });
-    for (uint8_t c : out.classes) {
-        if (c == uint8_t(PixelClass::kMissed))
-            ++out.counts.missed;
-        else if (c == uint8_t(PixelClass::kHit))
-            ++out.counts.hit;
-        else
-            ++out.counts.undecided;
-    }
+    tallyClasses(out);
     out.threads = resolveThreadCount(parallel.threads);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "quaternia/cellmap/certify_set.h"
+#include "quaternia/cellmap/orbit_test_helpers.h"
 #include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/render/march.h"
 #include "quaternia/render/pixel_certificate.h"
@@ -34,25 +35,7 @@ Scene sceneWith(const std::vector<std::pair<std::string, ParameterValue>>& value
     return scene;
 }
 
-// Whether the orbit of z stays within the escape radius for `iterations` iterates (false: it
-// left, and so, R being an escape radius, tends to infinity).
-bool staysBounded(const HypercomplexFormula& formula, Hypercomplex z, double radius,
-                  int iterations) {
-    // Brent's cycle detection: an orbit that repeats a value exactly (as attracted orbits do in
-    // floating point) revisits only values already seen, so it stays for every iterate.
-    Hypercomplex saved = z;
-    int power = 1, length = 0;
-    for (int n = 0; n < iterations; ++n) {
-        double norm = 0;
-        for (int k = 0; k < kMaxAlgebraDimension; ++k)
-            norm += z[k] * z[k];
-        if (norm > radius * radius) return false;
-        z = formula.evaluate(z);
-        if (z == saved) return true;
-        if (++length == power) saved = z, power *= 2, length = 0;
-    }
-    return true;
-}
+using testing::staysBounded;
 
 struct Checked {
     int64_t hits = 0, missed = 0, undecided = 0;
