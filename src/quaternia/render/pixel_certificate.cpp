@@ -303,13 +303,7 @@ PixelCertificate certifyPixels(const Scene& scene, const WorkOptions& options) {
 PixelCertificate certifyPixels(const Fractal& fractal, const Camera& camera, double epsilon,
                                const WorkOptions& options) {
     const auto start = std::chrono::steady_clock::now();
-    PixelCertificate out;
-    out.width = camera.width();
-    out.height = camera.height();
-    const size_t pixels = size_t(out.width) * size_t(out.height);
-    out.classes.assign(pixels, uint8_t(PixelClass::kUndecided));
-    out.nearestHit.assign(pixels, PixelCertificate::kNoDepth);
-    out.farthestHit.assign(pixels, PixelCertificate::kNoDepth);
+    PixelCertificate out = undecidedCertificate(camera.width(), camera.height());
     const Certifier certifier(fractal, camera, epsilon);
     const ParallelOptions parallel = imageParallelOptions(options, out.width, out.height);
     std::vector<int64_t> proofs(size_t(resolveThreadCount(parallel.threads)), 0);
@@ -322,6 +316,17 @@ PixelCertificate certifyPixels(const Fractal& fractal, const Camera& camera, dou
     tallyClasses(out);
     out.threads = resolveThreadCount(parallel.threads);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+PixelCertificate undecidedCertificate(int width, int height) {
+    PixelCertificate out;
+    out.width = width;
+    out.height = height;
+    const size_t pixels = size_t(width) * size_t(height);
+    out.classes.assign(pixels, uint8_t(PixelClass::kUndecided));
+    out.nearestHit.assign(pixels, PixelCertificate::kNoDepth);
+    out.farthestHit.assign(pixels, PixelCertificate::kNoDepth);
     return out;
 }
 

@@ -79,6 +79,8 @@ PixelCertificate certifyPixels(const Scene& scene, const WorkOptions& options = 
 PixelCertificate certifyPixels(const Fractal& fractal, const Camera& camera, double epsilon,
                                const WorkOptions& options = {});
 
+// A certificate of the size with every pixel undecided and no depths (where certifiers start).
+PixelCertificate undecidedCertificate(int width, int height);
 // Sets certificate.counts from its classes.
 void tallyClasses(PixelCertificate& certificate);
 

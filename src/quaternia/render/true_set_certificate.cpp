@@ -195,13 +195,7 @@ PixelCertificate certifyPixelsAgainstSet(const Fractal& fractal, const Certified
                                          const Camera& camera, double epsilon,
                                          const WorkOptions& options) {
     const auto start = std::chrono::steady_clock::now();
-    PixelCertificate out;
-    out.width = camera.width();
-    out.height = camera.height();
-    const size_t pixels = size_t(out.width) * size_t(out.height);
-    out.classes.assign(pixels, uint8_t(PixelClass::kUndecided));
-    out.nearestHit.assign(pixels, PixelCertificate::kNoDepth);
-    out.farthestHit.assign(pixels, PixelCertificate::kNoDepth);
+    PixelCertificate out = undecidedCertificate(camera.width(), camera.height());
     const TrueSetCertifier certifier(fractal, set, camera, epsilon);
     const ParallelOptions parallel = imageParallelOptions(options, out.width, out.height);
     out.completed = parallelForTiles(out.width, out.height, parallel, [&](const Tile& tile, int) {
