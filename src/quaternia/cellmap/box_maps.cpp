@@ -94,6 +94,47 @@ BoxMap complexPolynomialBoxMap(std::vector<std::complex<double>> coefficients,
         }
         return out;
     };
+    // f^k by the mean value form: f^k(X) lies in f^k(m) + D (X - m) for the cell's centre m and
+    // D holding (f^k)' over X, the product of p' over the boxes f^j(X) (a holomorphic map's
+    // difference quotient along a segment is a mean of its derivative there, which lies in the
+    // convex box D). The turn of D is applied once, so the result wraps one turned square.
+    std::vector<std::complex<double>> slope;
+    for (size_t k = 1; k < coefficients.size(); ++k)
+        slope.push_back(double(k) * coefficients[k]);
+    auto horner = [](const std::vector<std::complex<double>>& a, const ComplexInterval& z) {
+        ComplexInterval w = constant(a.back());
+        for (size_t k = a.size() - 1; k-- > 0;)
+            w = w * z + constant(a[k]);
+        return w;
+    };
+    map.iterateImage = [=](const Box3& box, int iterates) {
+        const double mu = 0.5 * (box[0].lo + box[0].hi), mv = 0.5 * (box[1].lo + box[1].hi);
+        ComplexInterval z = toPlane(box[0], box[1]);
+        ComplexInterval m = toPlane(Interval::point(mu), Interval::point(mv));
+        const ComplexInterval offset =
+            toPlane(box[0] - Interval::point(mu), box[1] - Interval::point(mv));
+        // toPlane added the origin to the offset too: take it off again.
+        const ComplexInterval d{offset.re - Interval::point(origin.real()),
+                                offset.im - Interval::point(origin.imag())};
+        ComplexInterval derivative{Interval::point(1), Interval::point(0)};
+        for (int j = 0; j < iterates; ++j) {
+            derivative = derivative * horner(slope, z);
+            z = horner(coefficients, z);
+            m = horner(coefficients, m);
+        }
+        const ComplexInterval w = m + derivative * d;
+        const ComplexInterval p{w.re - Interval::point(origin.real()),
+                                w.im - Interval::point(origin.imag())};
+        Box3 out{};
+        if (!turned) {
+            out[0] = p.re, out[1] = p.im;
+        } else {
+            out[0] = (cosine * p.re + sine * p.im) * drift;
+            out[1] = (cosine * p.im - sine * p.re) * drift;
+        }
+        return out;
+    };
+    map.iterates = {3};
     const double radiusSquared = roundedUp(escapeRadius * escapeRadius);
     map.escapes = [=](const Box3& box) {
         const ComplexInterval z = toPlane(box[0], box[1]);

@@ -50,14 +50,21 @@ struct Image {
     bool has(uint8_t flag) const { return (flags & flag) != 0; }
 };
 
-Image imageOf(const CellGrid& grid, const BoxMap& map, int level, const CellIndex& c) {
+// The cell's image under f (iterates 1) or f^k (BoxMap::iterateImage). f^k's images are kept
+// where they are at most kIterateExtent cells across (where f stretches little: what they are
+// for); wider ones are marked wide and never read, which saves the long scans of their
+// successes.
+constexpr int64_t kIterateExtent = 8;
+
+Image imageOf(const CellGrid& grid, const BoxMap& map, int level, const CellIndex& c,
+              int iterates = 1) {
     Image image;
     const Box3 box = cellBox(grid, level, c);
     if (map.escapes(box)) {
         image.flags = Image::kEscapes;
         return image;
     }
-    const Box3 mapped = map.image(box);
+    const Box3 mapped = iterates == 1 ? map.image(box) : map.iterateImage(box, iterates);
     for (int a = 0; a < grid.dimension(); ++a) {
         const AxisRange r = grid.cellsTouched(level, a, mapped[a]);
         if (r.beyond) image.flags |= Image::kBeyond;
@@ -65,7 +72,7 @@ Image imageOf(const CellGrid& grid, const BoxMap& map, int level, const CellInde
             image.flags |= Image::kEmpty;
             continue;
         }
-        if (r.last - r.first > 255) image.flags |= Image::kWide;
+        if (r.last - r.first > (iterates == 1 ? 255 : kIterateExtent)) image.flags |= Image::kWide;
         image.first[size_t(a)] = int32_t(r.first);
         image.extent[size_t(a)] = uint8_t(std::min<int64_t>(255, r.last - r.first));
     }
@@ -123,11 +130,16 @@ int sweepToFixedPoint(std::vector<int32_t>& active, const WorkOptions& work, Tes
 enum : uint8_t { kPending = 0, kReached = 1, kExcluded = 2 };
 
 int64_t growToFixedPoint(CellGrid& grid, int level, const std::vector<CellKey>& cells,
-                         const std::vector<Image>& images, std::vector<uint8_t>& state,
-                         const std::vector<int32_t>& slots, uint8_t target, bool outsideRules,
-                         const WorkOptions& work) {
-    const size_t count = cells.size();
-    std::vector<int32_t> waitHead(count, -1), waitNext(count, -1), queue;
+                         const std::vector<const std::vector<Image>*>& sets,
+                         std::vector<uint8_t>& state, const std::vector<int32_t>& slots,
+                         uint8_t target, bool outsideRules, const WorkOptions& work) {
+    const size_t count = cells.size(), setCount = sets.size();
+    // Per image set: the wait lists (head per blocker, next per waiting cell) and whether a
+    // cell waits in that set's list (then its blocker has not moved, and the set is not tried).
+    std::vector<std::vector<int32_t>> waitHead(setCount, std::vector<int32_t>(count, -1));
+    std::vector<std::vector<int32_t>> waitNext(setCount, std::vector<int32_t>(count, -1));
+    std::vector<std::vector<uint8_t>> waiting(setCount, std::vector<uint8_t>(count, 0));
+    std::vector<int32_t> queue;
     queue.reserve(count);
     for (size_t n = count; n-- > 0;)
         if (state[n] == kPending) queue.push_back(int32_t(n));
@@ -136,36 +148,44 @@ int64_t growToFixedPoint(CellGrid& grid, int level, const std::vector<CellKey>& 
         if ((++tests & 0xFFFF) == 0 && cancelled(work)) return -1;
         const int32_t n = queue.back();
         queue.pop_back();
-        const Image& image = images[size_t(n)];
-        int32_t blocker = -1;
-        bool ok;
-        if (outsideRules && (image.has(Image::kEscapes) || image.has(Image::kEmpty))) {
-            ok = true;
-        } else if (image.has(Image::kWide) || (!outsideRules && image.has(Image::kBeyond))) {
-            ok = false;
-        } else {
-            ok = visitImage(grid, level, image, [&](const CellIndex& touched, uint8_t v) {
-                if (v == target) return true;
-                const int64_t slot = grid.cellSlot(level, touched);
-                const int32_t b = slot >= 0 ? slots[size_t(slot)] : -1;
-                if (b >= 0 && state[size_t(b)] == kPending) blocker = b;
-                return false;
-            });
+        if (state[size_t(n)] != kPending) continue;
+        bool ok = false;
+        for (size_t s = 0; s < setCount && !ok; ++s) {
+            if (waiting[s][size_t(n)]) continue;
+            const Image& image = (*sets[s])[size_t(n)];
+            int32_t blocker = -1;
+            if (outsideRules && (image.has(Image::kEscapes) || image.has(Image::kEmpty))) {
+                ok = true;
+            } else if (image.has(Image::kWide) || (!outsideRules && image.has(Image::kBeyond))) {
+                ok = false;
+            } else {
+                ok = visitImage(grid, level, image, [&](const CellIndex& touched, uint8_t v) {
+                    if (v == target) return true;
+                    const int64_t slot = grid.cellSlot(level, touched);
+                    const int32_t b = slot >= 0 ? slots[size_t(slot)] : -1;
+                    if (b >= 0 && state[size_t(b)] == kPending) blocker = b;
+                    return false;
+                });
+            }
+            if (!ok && blocker >= 0) {
+                waitNext[s][size_t(n)] = waitHead[s][size_t(blocker)];
+                waitHead[s][size_t(blocker)] = n;
+                waiting[s][size_t(n)] = 1;
+            }
         }
-        if (ok) {
-            __atomic_store_n(grid.valueAddress(level, indexOf(cells[size_t(n)])), target,
-                             __ATOMIC_RELAXED);
-            state[size_t(n)] = kReached;
-            ++reached;
-            for (int32_t w = waitHead[size_t(n)]; w >= 0;) {
-                const int32_t next = waitNext[size_t(w)];
+        if (!ok) continue;
+        __atomic_store_n(grid.valueAddress(level, indexOf(cells[size_t(n)])), target,
+                         __ATOMIC_RELAXED);
+        state[size_t(n)] = kReached;
+        ++reached;
+        for (size_t s = 0; s < setCount; ++s) {
+            for (int32_t w = waitHead[s][size_t(n)]; w >= 0;) {
+                const int32_t next = waitNext[s][size_t(w)];
+                waiting[s][size_t(w)] = 0;
                 queue.push_back(w);
                 w = next;
             }
-            waitHead[size_t(n)] = -1;
-        } else if (blocker >= 0) {
-            waitNext[size_t(n)] = waitHead[size_t(blocker)];
-            waitHead[size_t(blocker)] = n;
+            waitHead[s][size_t(n)] = -1;
         }
     }
     return reached;
@@ -214,6 +234,22 @@ CellMappingReport classifyCells(CellGrid& grid, const BoxMap& map,
             });
         }
 
+        // f^k's images too (BoxMap::iterateImage): a cell is decided by whichever set proves it.
+        std::vector<std::vector<Image>> iterated;
+        for (int k : map.iterateImage ? map.iterates : std::vector<int>{}) {
+            std::vector<Image>& set = iterated.emplace_back(undecided.size());
+            ParallelOptions parallel;
+            parallel.threads = options.work.threads;
+            parallel.chunkSize = 4096;
+            parallelFor(int64_t(undecided.size()), parallel, [&](int64_t begin, int64_t end, int) {
+                for (int64_t n = begin; n < end; ++n)
+                    set[size_t(n)] = imageOf(grid, map, level, indexOf(undecided[size_t(n)]), k);
+            });
+        }
+        std::vector<const std::vector<Image>*> sets{&images};
+        for (const std::vector<Image>& set : iterated)
+            sets.push_back(&set);
+
         // Each cell's place in `undecided`, by its slot in the grid's tiles.
         std::vector<int32_t> slots(size_t(grid.slotCount(level)), -1);
         for (size_t n = 0; n < undecided.size(); ++n)
@@ -222,7 +258,7 @@ CellMappingReport classifyCells(CellGrid& grid, const BoxMap& map,
 
         // Outside: the least fixed point (header comment).
         const auto outsideValue = uint8_t(CellClass::kOutside);
-        if (growToFixedPoint(grid, level, undecided, images, state, slots, outsideValue, true,
+        if (growToFixedPoint(grid, level, undecided, sets, state, slots, outsideValue, true,
                              options.work) < 0)
             break;
         // The cells left, by number.
@@ -242,7 +278,8 @@ CellMappingReport classifyCells(CellGrid& grid, const BoxMap& map,
         // (as the outside grows from the escape region), which tests each cell about once per
         // blocker instead of once per sweep.
         const auto insideValue = uint8_t(CellClass::kInside);
-        if (active.size() <= kGreatestFixedPointCells || !foundInside) {
+        const bool greatest = active.size() <= kGreatestFixedPointCells || !foundInside;
+        if (greatest) {
             std::vector<int32_t> candidates = active;
             for (int32_t n : active)
                 store(indexOf(undecided[size_t(n)]), kCandidate);
@@ -256,15 +293,25 @@ CellMappingReport classifyCells(CellGrid& grid, const BoxMap& map,
                 return !stays;
             });
             if (stats.insideSweeps < 0) break;
-            for (int32_t n : candidates)
+            for (int32_t n : candidates) {
                 store(indexOf(undecided[size_t(n)]), insideValue);
+                state[size_t(n)] = kReached;
+            }
             stats.inside = int64_t(candidates.size());
         } else {
-            const int64_t grown = growToFixedPoint(grid, level, undecided, images, state, slots,
+            const int64_t grown = growToFixedPoint(grid, level, undecided, sets, state, slots,
                                                    insideValue, false, options.work);
             if (grown < 0) break;
             stats.inside = grown;
         }
+        // After a greatest fixed point on f alone, f^k's images may still add inside cells.
+        if (sets.size() > 1 && greatest) {
+            const int64_t grown = growToFixedPoint(grid, level, undecided, sets, state, slots,
+                                                   insideValue, false, options.work);
+            if (grown < 0) break;
+            stats.inside += grown;
+        }
+        if (cancelled(options.work)) break;
         foundInside = foundInside || stats.inside > 0;
         images = std::vector<Image>();
         slots = std::vector<int32_t>();

@@ -45,6 +45,14 @@ struct BoxMap {
     std::function<Box3(const Box3&)> image;
     // True only where every point of the box lies beyond the escape radius.
     std::function<bool(const Box3&)> escapes;
+    // Optional: a box holding f^k(p) for every p in the box, for the iterates k of `iterates`.
+    // A cell is outside where f^k's image touches outside cells only, inside where inside
+    // cells only, as for f: the orbit reaches them after k steps. Where f turns and stretches
+    // little, each step's box wraps a turned square, and boxes grow faster than the map
+    // stretches (the undecided band swells about a weakly repelling point whose multiplier
+    // turns, as the rabbit's alpha fixed point); f^k's image by the mean value form turns once.
+    std::function<Box3(const Box3&, int k)> iterateImage;
+    std::vector<int> iterates;
 };
 
 struct CellMappingOptions {

@@ -297,6 +297,59 @@ TEST(CellMapping, ComplexBoxImageHoldsThePolynomialOfItsPoints) {
             }
 }
 
+TEST(CellMapping, IterateImageHoldsTheIteratesOfItsPoints) {
+    // f^k's box by the mean value form (BoxMap::iterateImage) against long double iterates.
+    const std::vector<std::vector<Complex>> polynomials = {{{-0.122561, 0.744862}, 0, 1},
+                                                           {{0.3, -0.2}, {-0.5, 0.1}, {0, 0.7}, 1}};
+    std::mt19937_64 random(12);
+    std::uniform_real_distribution<double> corner(-1.2, 1.2), unit(0, 1), exponent(-6, -1.5);
+    for (const auto& p : polynomials)
+        for (double degrees : {0.0, 30.0})
+            for (int iterates : {2, 3}) {
+                const Complex origin(0.1, -0.2);
+                const BoxMap map = complexPolynomialBoxMap(p, origin, degrees, 2.0);
+                ASSERT_TRUE(map.iterateImage);
+                const long double angle = degrees * 3.14159265358979323846264338327950L / 180;
+                const std::complex<long double> turn(std::cos(angle), std::sin(angle));
+                const std::complex<long double> o(origin.real(), origin.imag());
+                int tight = 0, small = 0;
+                for (int n = 0; n < 300; ++n) {
+                    const double x0 = corner(random), y0 = corner(random);
+                    const double w = std::pow(10.0, exponent(random));
+                    const Box3 box = box2(x0, x0 + w, y0, y0 + w);
+                    const Box3 image = map.iterateImage(box, iterates);
+                    long double lowest = INFINITY, highest = -INFINITY;
+                    for (int k = 0; k < 12; ++k) {
+                        const double u = k < 4 ? x0 + (k & 1) * w : x0 + unit(random) * w;
+                        const double v = k < 4 ? y0 + (k >> 1) * w : y0 + unit(random) * w;
+                        std::complex<long double> z = o + turn * std::complex<long double>(u, v);
+                        for (int j = 0; j < iterates; ++j) {
+                            std::complex<long double> value(p.back().real(), p.back().imag());
+                            for (size_t m = p.size() - 1; m-- > 0;)
+                                value =
+                                    value * z + std::complex<long double>(p[m].real(), p[m].imag());
+                            z = value;
+                        }
+                        const std::complex<long double> q = (z - o) / turn;
+                        if (std::abs(q) > 1e6) continue;  // escaped far: nothing to compare
+                        lowest = std::min(lowest, q.real()), highest = std::max(highest, q.real());
+                        ASSERT_TRUE(image[0].lo <= q.real() && q.real() <= image[0].hi &&
+                                    image[1].lo <= q.imag() && q.imag() <= image[1].hi)
+                            << "f^" << iterates << " rotation " << degrees << " box (" << x0 << ", "
+                            << y0 << ") + " << w << " point (" << u << ", " << v << ")";
+                    }
+                    // Not vacuous: a small box's image is a few times the spread of its points'
+                    // images (the corners' among them), as a turned square's box is.
+                    if (w < 1e-3 && highest > lowest) {
+                        ++small;
+                        tight += image[0].width() < 4 * double(highest - lowest);
+                    }
+                }
+                EXPECT_GT(small, 100);
+                EXPECT_GE(tight, small * 9 / 10);
+            }
+}
+
 Quaternion polynomialOf(const std::vector<double>& coefficients, const Quaternion& z) {
     Quaternion p(coefficients.back());
     for (size_t k = coefficients.size() - 1; k-- > 0;)
