@@ -67,6 +67,25 @@ BoxMap complexPolynomialBoxMap(std::vector<std::complex<double>> coefficients,
         return {cosine * u - sine * v + Interval::point(origin.real()),
                 sine * u + cosine * v + Interval::point(origin.imag())};
     };
+    // A plane box back in the frame's coordinates.
+    auto toFrame = [=](const ComplexInterval& w) {
+        const ComplexInterval p{w.re - Interval::point(origin.real()),
+                                w.im - Interval::point(origin.imag())};
+        Box3 out{};
+        if (!turned) {
+            out[0] = p.re, out[1] = p.im;
+        } else {
+            out[0] = (cosine * p.re + sine * p.im) * drift;
+            out[1] = (cosine * p.im - sine * p.re) * drift;
+        }
+        return out;
+    };
+    auto horner = [](const std::vector<std::complex<double>>& a, const ComplexInterval& z) {
+        ComplexInterval w = constant(a.back());
+        for (size_t k = a.size() - 1; k-- > 0;)
+            w = w * z + constant(a[k]);
+        return w;
+    };
     BoxMap map;
     const bool square =
         coefficients.size() == 3 && coefficients[2] == 1.0 && coefficients[1] == 0.0;
@@ -79,20 +98,9 @@ BoxMap complexPolynomialBoxMap(std::vector<std::complex<double>> coefficients,
                      Interval::point(coefficients[0].real()),
                  2.0 * (z.re * z.im) + Interval::point(coefficients[0].imag())};
         } else {
-            w = constant(coefficients.back());
-            for (size_t k = coefficients.size() - 1; k-- > 0;)
-                w = w * z + constant(coefficients[k]);
+            w = horner(coefficients, z);
         }
-        const ComplexInterval p{w.re - Interval::point(origin.real()),
-                                w.im - Interval::point(origin.imag())};
-        Box3 out{};
-        if (!turned) {
-            out[0] = p.re, out[1] = p.im;
-        } else {
-            out[0] = (cosine * p.re + sine * p.im) * drift;
-            out[1] = (cosine * p.im - sine * p.re) * drift;
-        }
-        return out;
+        return toFrame(w);
     };
     // f^k by the mean value form: f^k(X) lies in f^k(m) + D (X - m) for the cell's centre m and
     // D holding (f^k)' over X, the product of p' over the boxes f^j(X) (a holomorphic map's
@@ -101,12 +109,6 @@ BoxMap complexPolynomialBoxMap(std::vector<std::complex<double>> coefficients,
     std::vector<std::complex<double>> slope;
     for (size_t k = 1; k < coefficients.size(); ++k)
         slope.push_back(double(k) * coefficients[k]);
-    auto horner = [](const std::vector<std::complex<double>>& a, const ComplexInterval& z) {
-        ComplexInterval w = constant(a.back());
-        for (size_t k = a.size() - 1; k-- > 0;)
-            w = w * z + constant(a[k]);
-        return w;
-    };
     map.iterateImage = [=](const Box3& box, int iterates) {
         const double mu = 0.5 * (box[0].lo + box[0].hi), mv = 0.5 * (box[1].lo + box[1].hi);
         ComplexInterval z = toPlane(box[0], box[1]);
@@ -123,16 +125,7 @@ BoxMap complexPolynomialBoxMap(std::vector<std::complex<double>> coefficients,
             m = horner(coefficients, m);
         }
         const ComplexInterval w = m + derivative * d;
-        const ComplexInterval p{w.re - Interval::point(origin.real()),
-                                w.im - Interval::point(origin.imag())};
-        Box3 out{};
-        if (!turned) {
-            out[0] = p.re, out[1] = p.im;
-        } else {
-            out[0] = (cosine * p.re + sine * p.im) * drift;
-            out[1] = (cosine * p.im - sine * p.re) * drift;
-        }
-        return out;
+        return toFrame(w);
     };
     map.iterates = {3};
     const double radiusSquared = roundedUp(escapeRadius * escapeRadius);

@@ -24,12 +24,12 @@ struct CertifiedSet {
     CertifiedSpace space = CertifiedSpace::kReduced;
     Algebra algebra = Algebra::kQuaternion;
     std::string formula;  // fractal.formula as certified
-    Hypercomplex c;       // fractal.c as certified
+    Hypercomplex c{};     // fractal.c as certified
     // Reduced: the polynomial's real coefficients (lowest degree first, a_0 = 0), its constant's
     // real part and |Im|, and the axis n (a unit imaginary element; i where Im c = 0).
     std::vector<double> coefficients;
     double realConstant = 0, imaginaryConstant = 0;
-    Hypercomplex axis;
+    Hypercomplex axis{};
     double escapeRadius = 0;
     std::vector<CellGrid> grids;  // Reduced: one 3D grid; Product: the two components' planes
 
