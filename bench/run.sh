@@ -159,6 +159,16 @@ for target in best avx2; do
   isa=$target paired "algebra-coquaternion-1080p-$target" --set 'fractal.algebra="coquaternion"'
   isa=$target paired "algebra-biquaternion-half-1080p-$target" \
     --set 'fractal.algebra="biquaternion"'
+  # Ten general polynomials of degrees 2 to 5, one- and two-sided, several terms (issue 42; the
+  # goals: median at most 2.5x the quaternion z^2 + c frame, none above 4x), the default scene
+  # otherwise. The list is fixed, the default c for every formula.
+  polynomials=('z^2 + 0.1*z + c' 'i z^2 j + c' '(1+0.2i) z (1-0.1k) z + 0.1j z + c' 'z^3 + c'
+    'z^3 + 0.2j z^2 + c' '(1+0.1j) z^3 - 0.3i z + c' 'z^4 + c' 'z^4 - 0.2 z^2 + 0.1k z + c'
+    'z^5 + c' 'z j z^4 + 0.1 z^2 + c')
+  for n in "${!polynomials[@]}"; do
+    isa=$target paired "polynomial-$((n + 1))-1080p-$target" \
+      --set "fractal.formula=${polynomials[$n]}"
+  done
 done
 # Certified pictures (issue 38; the goals: a certificate at 640x360 in at most 20x the time of
 # the picture itself, undecided pixels at most 5%): each run renders the scene as it is (its
