@@ -1,5 +1,5 @@
-// The explorer page: a progressive view of the scene (a quarter-resolution frame at once, then
-// finer ones while the view is still), orbit and zoom with the mouse, the Mandelbrot map that
+// The explorer page: a progressive view of the scene (a quarter-resolution frame at once, or a
+// smaller one where that is slow, then finer ones while the view is still), orbit and zoom with the mouse, the Mandelbrot map that
 // picks c, presets, and the exports. Every request names this tab's client id, so the server
 // cancels the tab's stale render as soon as a newer view is asked for. The timeline
 // (timeline.js) keys, plays and copies films of the view.
@@ -41,14 +41,31 @@ function finalSize() {
           Math.max(16, Math.round(viewport.clientHeight * scale))];
 }
 
-// Refinement levels: a quarter of the size with one sample, a half, full, then the samples the
-// scene asks for.
+// The preview (the first level, and the frames shown while dragging) is the final size divided
+// by previewDivisor: 4, a quarter, where that frame renders within the budget; more where it
+// does not (coquaternions, biquaternions, bicomplex functions: seconds at a quarter of full HD),
+// so that a drag still shows 5 frames a second. Each preview's server time moves the divisor by
+// the square root of its ratio to the budget (the time goes about as the pixels), with some
+// slack either way so that it settles; at most 64 (30x17 of full HD). ?previewBudget=MS sets
+// the budget (the browser test makes every preview too slow with 0.01).
+const PREVIEW_BUDGET_MS = +(new URLSearchParams(location.search).get('previewBudget') || 120);
+let previewDivisor = 4;
+function adaptPreview(renderMs) {
+  if (!(renderMs > 0)) return;
+  const ratio = renderMs / PREVIEW_BUDGET_MS;
+  if (ratio > 1.3 || (ratio < 0.5 && previewDivisor > 4))
+    previewDivisor = Math.min(64, Math.max(4, previewDivisor * Math.sqrt(ratio)));
+}
+
+// Refinement levels: the preview with one sample, then halving the divisor from the largest
+// power of two below it (a half and full after a quarter), then the samples the scene asks for.
 function levels() {
   const [width, height] = finalSize();
   const size = (d) => ({ 'render.width': Math.max(1, Math.round(width / d)),
                          'render.height': Math.max(1, Math.round(height / d)) });
-  const list = [{ ...size(4), 'render.samples': 1 }, { ...size(2), 'render.samples': 1 },
-                { ...size(1), 'render.samples': 1 }];
+  const list = [{ ...size(previewDivisor), 'render.samples': 1 }];
+  for (let d = 2 ** Math.floor(Math.log2(previewDivisor / 1.5)); d >= 1; d /= 2)
+    list.push({ ...size(d), 'render.samples': 1 });
   if (state['render.samples'] > 1) list.push({ ...size(1), 'render.samples': state['render.samples'] });
   return list;
 }
@@ -69,7 +86,8 @@ let generation = 0;       // bumped by every change of the view
 let lastChange = 0;
 let inflight = null;      // { controller, level } of the running request
 let framePending = false;
-const timing = { started: performance.now(), firstFrameMs: null, firstRenderMs: null, frames: [] };
+const timing = { started: performance.now(), firstFrameMs: null, firstRenderMs: null, frames: [],
+                 frameInfo: [] };
 window.exploreTiming = timing;
 
 // While the mouse moves, a quarter-resolution request in flight is let finish (it takes a few
@@ -122,6 +140,7 @@ async function requestLevel(level) {
     return;
   }
   markInvalid(controls, null);
+  if (level === 0) adaptPreview(+response.headers.get('X-Render-Ms'));
   await show(blob, list[level], response.headers.get('X-Render-Ms'), certify && response.headers);
   if (stale) {  // a frame of a view just left: shown, now the newest view
     if (!inflight) requestLevel(0);
@@ -164,6 +183,8 @@ async function show(blob, level, renderMs, certifyHeaders) {
     loadMap();  // after the first frame, so that the two do not share the cores
   }
   timing.frames.push(now);
+  timing.frameInfo.push({ size: `${level['render.width']}x${level['render.height']}`,
+                          renderMs: +renderMs });
   view.dataset.frames = timing.frames.length;
   statusLine.className = '';
   statusLine.textContent = `${level['render.width']}x${level['render.height']}, ` +

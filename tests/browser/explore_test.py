@@ -107,6 +107,27 @@ def timeline(driver, binary, work):
     step("dragging refused a drop on a key, moved a key to 2 s; Delete removed it")
 
 
+def preview_shrinks(driver, server):
+    """The preview's size follows its render time (explore.js, adaptPreview): with a budget of
+    0.01 ms every preview is too slow, so a drag's frames come smaller than the quarter size, and
+    the view still refines to the final size when it stops."""
+    driver.get(server.url + "?size=240x160&previewBudget=0.01")
+    wait_for_final(driver)
+    view = driver.find_element(By.ID, "viewport")
+    before = driver.execute_script("return window.exploreTiming.frameInfo.length;")
+    actions = ActionChains(driver, duration=0).move_to_element(view).click_and_hold()
+    for x in range(12):
+        actions.move_by_offset(4, 0).pause(0.1)
+    actions.release().perform()
+    wait_for_final(driver)
+    sizes = [f["size"] for f in
+             driver.execute_script("return window.exploreTiming.frameInfo;")[before:]]
+    widths = [int(size.split("x")[0]) for size in sizes]
+    check(min(widths) < 60, "previews smaller than the quarter size (60x40): %s" % sizes)
+    check(sizes[-1] == "240x160", "the still view refined to the final size: %s" % sizes)
+    step("previews over budget shrank: %s" % " ".join(sizes))
+
+
 def explore(server, browser, arguments, work):
     """The page in the browser: every check of the test."""
     driver = browser.driver
@@ -199,6 +220,7 @@ def explore(server, browser, arguments, work):
         check(shown_image(driver) != shown, "the basilica preset changes the image")
         step("presets %s; basilica set c = -1" % names)
         timeline(driver, arguments.binary, work)
+        preview_shrinks(driver, server)
     errors = browser.uncaught_errors()
     check(not errors, "the page threw: %s" % errors)
     print("browser test: passed", flush=True)
