@@ -358,7 +358,7 @@ document.getElementById('export-mesh').addEventListener('click', () => downloadF
 
 const timeline = createTimeline({
   state, start, viewQuery, timing, changed, errorText, resumeLive: () => viewChanged(),
-  // Frames at a quarter of the final size, as the first level of the live view.
+  // Frames at the first level's size, the live view's preview (a quarter, or less where slow).
   previewSize: () => {
     const { 'render.width': width, 'render.height': height } = levels()[0];
     return { 'render.width': width, 'render.height': height };
