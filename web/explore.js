@@ -1,8 +1,8 @@
 // The explorer page: a progressive view of the scene (a quarter-resolution frame at once, or a
-// smaller one where that is slow, then finer ones while the view is still), orbit and zoom with the mouse, the Mandelbrot map that
-// picks c, presets, and the exports. Every request names this tab's client id, so the server
-// cancels the tab's stale render as soon as a newer view is asked for. The timeline
-// (timeline.js) keys, plays and copies films of the view.
+// smaller one where that is slow, then finer ones while the view is still), orbit and zoom with
+// the mouse, the Mandelbrot map that picks c, presets, and the exports. Every request names this
+// tab's client id, so the server cancels the tab's stale render as soon as a newer view is asked
+// for. The timeline (timeline.js) keys, plays and copies films of the view.
 import { buildControls, markInvalid, sameValue, tomlValue } from './controls.js';
 import { createTimeline } from './timeline.js';
 
