@@ -133,9 +133,9 @@ std::optional<Fractal> octonionQuaternionSubalgebra(const FractalSettings& fract
         if (v) rest = rest - dotProduct(rest, *v) * *v - dotProduct(rest, *uv) * *uv;
         if (euclideanNorm(rest) > scale) return std::nullopt;
     }
-    // Within H the quaternion half (or the plain quaternion set) is the same set already.
-    if (!v || euclideanNorm(Hypercomplex{0, 0, 0, 0, (*v)[4], (*v)[5], (*v)[6], (*v)[7]}) == 0)
-        return std::nullopt;
+    // Everything in span{1, u}: no 3D slice lies there. (Everything in H took quaternionHalf,
+    // which asks what this function asks and less.)
+    if (!v) return std::nullopt;
     // u2, a unit of Im H orthogonal to u, and u3 = u u2 (in H).
     const Quaternion uH(0, (*u)[1], (*u)[2], (*u)[3]);
     const Quaternion across =
