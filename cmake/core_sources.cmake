@@ -42,6 +42,8 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/fractal/slice.cpp
   quaternia/fractal/hypercomplex_julia.cpp
   quaternia/fractal/duplex_component.cpp
+  quaternia/fractal/duplex_escape_map.cpp
+  quaternia/fractal/duplex_program.cpp
   quaternia/fractal/octonion_fold.cpp
   quaternia/render/camera.cpp
   quaternia/render/march.cpp

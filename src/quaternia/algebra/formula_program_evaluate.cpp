@@ -53,6 +53,24 @@ std::pair<Complex, Complex> complexFunction(FormulaFunction function, const Comp
     return {w, one};
 }
 
+// f(w) alone: complexFunction's first member, by the same calls.
+Complex complexFunctionValue(FormulaFunction function, const Complex& w) {
+    switch (function) {
+        case FormulaFunction::kExp:
+            return std::exp(w);
+        case FormulaFunction::kSin:
+            return std::sin(w);
+        case FormulaFunction::kCos:
+            return std::cos(w);
+        case FormulaFunction::kSinh:
+            return std::sinh(w);
+        case FormulaFunction::kCosh:
+            return std::cosh(w);
+        default:
+            return complexFunction(function, w).first;
+    }
+}
+
 Hypercomplex negated(const Hypercomplex& a) {
     return -1.0 * a;
 }
@@ -138,6 +156,13 @@ void run(const FormulaProgram& program, const MultiplicationTable& table, const 
                 const double exponent = i.op == Op::kRealPower ? factors[i.index] : 0;
                 std::array<Complex, 2> f, df;
                 for (std::size_t k = 0; k < 2; ++k) {
+                    if constexpr (!kSlope) {
+                        // The value alone: the derivative would double the cost of sin and cos.
+                        f[k] = i.op == Op::kFunction
+                                   ? complexFunctionValue(FormulaFunction(i.index), w[k])
+                                   : std::pow(w[k], exponent);
+                        continue;
+                    }
                     const auto [fk, derivative] =
                         i.op == Op::kFunction ? complexFunction(FormulaFunction(i.index), w[k])
                                               : std::pair{std::pow(w[k], exponent),

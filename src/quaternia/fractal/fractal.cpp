@@ -181,8 +181,23 @@ DistanceEstimate Fractal::estimate(const Point3d& p) const {
     return e;
 }
 
+double Fractal::clearance(const Point3d& p) const {
+    const Hypercomplex q = slice_.fromWorld(p);
+    double largest = 0;
+    for (double x : q)
+        largest = std::max(largest, std::fabs(x));
+    const double d = set_->clearance(q) - 1e-12 * (1 + largest);  // as excludesTube's rounding
+    return d > 0 ? d * slice_.stepScale() : 0.0;
+}
+
 bool Fractal::excludesTube(const Ray& ray, double t0, double t1, double radius) const {
     const double extend = radius > 0 ? radius : 0;
+    if (hasClearance()) {
+        // Every point of the tube lies within half its length plus its radius of the middle: a
+        // lookup first, the forms where it proves nothing.
+        const double reach = (0.5 * (t1 - t0) * length(ray.direction) + extend) * (1 + 1e-12);
+        if (clearance(ray.at(0.5 * (t0 + t1))) > reach) return true;
+    }
     const Hypercomplex a = slice_.fromWorld(ray.at(t0 - extend)),
                        b = slice_.fromWorld(ray.at(t1 + extend));
     double largest = 0;

@@ -58,6 +58,15 @@ class Fractal {
     // that a 3D step of that length cannot cross the set.
     DistanceEstimate estimate(const Point3d& p) const;
     bool contains(const Point3d& p) const { return set_->contains(slice_.fromWorld(p)); }
+    // The same by the orbit alone (JuliaSet::containsByOrbit): the reference for tests.
+    bool containsByOrbit(const Point3d& p) const {
+        return set_->containsByOrbit(slice_.fromWorld(p));
+    }
+    // Whether clearance() may be positive (JuliaSet::hasClearance).
+    bool hasClearance() const { return set_->hasClearance(); }
+    // A proven lower bound of the 3D distance from p to the set (JuliaSet::clearance through the
+    // slice's step scale, less an allowance for the slice map's rounding); 0 proves nothing.
+    double clearance(const Point3d& p) const;
     // Whether excludesSegment can prove anything (JuliaSet::provesEmptySpace).
     bool provesEmptySegments() const { return set_->provesEmptySpace(); }
     // True where no point ray.at(t), t0 <= t <= t1, belongs to K_N, proven (JuliaSet::

@@ -80,6 +80,16 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
         // ball (poles, branch points): Algorithm 2's fixed steps alone, POV-Ray's bailout 4.
         kind_ = DistanceKind::kLipschitz;
         bailout_ = escapeRadius_ = bailout == 0 ? rules_->defaultBailout : bailout;
+        if (DuplexComponentProgram::supports(formula_.program())) {
+            const FormulaProgram& program = formula_.program();
+            duplexPrograms_.emplace(std::array<DuplexComponentProgram, 2>{
+                DuplexComponentProgram(program, 0), DuplexComponentProgram(program, 1)});
+            sameComponents_ = true;
+            for (const Hypercomplex& e : program.elements()) {
+                const auto parts = duplexForm(e);
+                sameComponents_ = sameComponents_ && parts[0] == parts[1];
+            }
+        }
         return;
     }
     kind_ = rules_->distance;
@@ -165,16 +175,38 @@ DistanceEstimate HypercomplexJuliaSet::estimate(const Hypercomplex& z0) const {
     return multiplicativeEstimate(z0);
 }
 
+const DuplexEscapeMaps& HypercomplexJuliaSet::escapeMaps() const {
+    std::call_once(escapeMapsBuilt_, [&] {
+        escapeMaps_ = std::make_shared<const DuplexEscapeMaps>(
+            *duplexPrograms_, sameComponents_, maxIterations_, bailout_, kEscapeMapLevel);
+    });
+    return *escapeMaps_;
+}
+
+double HypercomplexJuliaSet::clearance(const Hypercomplex& z0) const {
+    return duplexPrograms_ ? escapeMaps().clearance(z0) : 0.0;
+}
+
 bool HypercomplexJuliaSet::contains(const Hypercomplex& z0) const {
+    if (duplexPrograms_ && escapeMaps().outside(z0)) return false;
+    return containsByOrbit(z0);
+}
+
+bool HypercomplexJuliaSet::containsByOrbit(const Hypercomplex& z0) const {
     const double bailoutSquared = bailout_ * bailout_;
-    if (rules_->escape == EscapeRule::kDuplexComponents && !formula_.transcendental()) {
+    if (rules_->escape == EscapeRule::kDuplexComponents &&
+        (duplexPrograms_ || !formula_.transcendental())) {
+        // In duplex form (the polynomials by Horner's rule, the functions by their component
+        // programs): the two components never mix.
+        thread_local std::vector<Complex> registers;
         auto w = duplexForm(z0);
         for (int n = 0;; ++n) {
             // |q|^2 = (|a|^2 + |b|^2) / 2
             if (0.5 * (std::norm(w[0]) + std::norm(w[1])) > bailoutSquared) return false;
             if (n + 1 >= maxIterations_) return true;
-            for (int i = 0; i < 2; ++i)
-                w[size_t(i)] = horner(componentCoefficients_[i], w[size_t(i)]);
+            for (size_t i = 0; i < 2; ++i)
+                w[i] = duplexPrograms_ ? (*duplexPrograms_)[i].value(w[i], registers)
+                                       : horner(componentCoefficients_[i], w[i]);
         }
     }
     Hypercomplex z = z0;

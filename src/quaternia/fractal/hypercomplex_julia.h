@@ -21,6 +21,8 @@
 #include <array>
 #include <complex>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <vector>
 
 #include "quaternia/algebra/hypercomplex_formula.h"
@@ -28,6 +30,8 @@
 #include "quaternia/fractal/algebra_rules.h"
 #include "quaternia/fractal/distance_estimate.h"
 #include "quaternia/fractal/duplex_component.h"
+#include "quaternia/fractal/duplex_escape_map.h"
+#include "quaternia/fractal/duplex_program.h"
 #include "quaternia/fractal/fractal_settings.h"
 #include "quaternia/fractal/julia_set.h"
 
@@ -44,7 +48,13 @@ class HypercomplexJuliaSet final : public JuliaSet {
     Algebra algebra() const override { return formula_.algebra(); }
     DistanceKind distanceKind() const override { return kind_; }
     DistanceEstimate estimate(const Hypercomplex& z0) const override;
+    // Bicomplex functions with disc forms (duplex_program.h) iterate in duplex form, and first
+    // ask their certified maps (duplex_escape_map.h, built on first use), whose clearance the
+    // fixed-step marcher skips by.
     bool contains(const Hypercomplex& z0) const override;
+    bool containsByOrbit(const Hypercomplex& z0) const override;
+    bool hasClearance() const override { return duplexPrograms_.has_value(); }
+    double clearance(const Hypercomplex& z0) const override;
     // ln|z_M| after exactly M iterations (or where it overflows), and the M the normal takes at
     // z0: the iterate where the estimate was taken or the escape iteration, at most N - 1, as
     // algebraRules() says.
@@ -86,6 +96,8 @@ class HypercomplexJuliaSet final : public JuliaSet {
     // A proven distance to K_N from the orbit's escape and the Lipschitz bounds of p along it
     // (header comment, docs/methods.md); orbits are followed at most kLipschitzOrbit iterates.
     static constexpr size_t kLipschitzOrbit = 256;
+    // The escape maps' finest cells: 2^11 per axis of the square |Re w|, |Im w| <= sqrt(2) B.
+    static constexpr int kEscapeMapLevel = 11;
     DistanceEstimate lipschitzDistance(const Hypercomplex& z0) const;
 
     HypercomplexFormula formula_;
@@ -100,6 +112,14 @@ class HypercomplexJuliaSet final : public JuliaSet {
     std::array<std::vector<std::complex<double>>, 2> componentCoefficients_;
     std::array<double, 2> componentEscapeRadius_ = {0, 0};
     std::array<DuplexComponent, 2> components_;
+    // Bicomplex functions whose operations all have disc forms: their orbits in duplex form, and
+    // the certified maps of both components, built once, on first use (a render's threads share
+    // them).
+    std::optional<std::array<DuplexComponentProgram, 2>> duplexPrograms_;
+    bool sameComponents_ = false;  // the two programs are the same map
+    const DuplexEscapeMaps& escapeMaps() const;
+    mutable std::once_flag escapeMapsBuilt_;
+    mutable std::shared_ptr<const DuplexEscapeMaps> escapeMaps_;
 };
 
 // The set of fractal.formula with fractal.c in fractal.algebra, through the multiplication table

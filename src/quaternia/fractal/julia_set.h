@@ -38,6 +38,15 @@ class JuliaSet {
     // The estimate at z0 (components past the algebra's dimension are 0).
     virtual DistanceEstimate estimate(const Hypercomplex& z0) const = 0;
     virtual bool contains(const Hypercomplex& z0) const = 0;
+    // The same by following the orbit alone, whatever else contains() may consult (the
+    // certified maps of DuplexEscapeMaps): the reference the fast answers are tested against.
+    virtual bool containsByOrbit(const Hypercomplex& z0) const { return contains(z0); }
+    // Whether clearance() may be positive: a proven lower bound of the distance to K_N that is a
+    // lookup, far cheaper than an orbit, for the fixed-step marcher to skip the samples within it
+    // (render/march.h, firstSampleInside).
+    virtual bool hasClearance() const { return false; }
+    // A lower bound of |z0 - y| over y in K_N (0 proves nothing).
+    virtual double clearance(const Hypercomplex& /*z0*/) const { return 0; }
     // ln|z_M| after exactly M iterations (or where it overflows): the potential whose gradient is
     // the normal; and the M the normal takes at z0.
     virtual double logRadiusAfter(const Hypercomplex& z0, int iterations) const = 0;

@@ -104,8 +104,25 @@ SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double 
         // Near the surface runs of two fail again and again: after such a failure this many
         // samples are tested one by one before a run is tried again (doubling while it fails).
         int64_t oneByOne = 0, backOff = 1;
+        const bool clearance = fractal.hasClearance();
+        const double along = length(ray.direction) * step;
         for (int64_t k = first; k <= last && crossing.steps < maxSteps;) {
             ++crossing.steps;
+            if (clearance) {
+                // A proven clearance d at a sample rules out every sample less than d ahead
+                // (k + m with m along < d); membership only where d is 0.
+                const Point3d p = ray.at(at(k));
+                if (const double d = fractal.clearance(p); d > 0) {
+                    const double ahead = std::ceil(d / along * (1 - 1e-12)) - 1;
+                    k = std::min(k + int64_t(std::clamp(ahead, 0.0, 1e15)), last);
+                } else if (fractal.contains(p)) {
+                    crossing.tInside = at(k);
+                    return crossing;
+                }
+                crossing.tOutside = at(k);
+                ++k;
+                continue;
+            }
             if (runs.span > 1 && oneByOne == 0) {
                 const int64_t end = std::min(k + runs.span - 1, last);
                 if (fractal.excludesSegment(ray, at(k), at(end))) {
