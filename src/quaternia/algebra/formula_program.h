@@ -20,11 +20,13 @@
 // their multiplication table (evaluateInAlgebra, below).
 #pragma once
 
+#include <complex>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
 #include "quaternia/algebra/formula.h"
+#include "quaternia/algebra/formula_tree.h"
 #include "quaternia/algebra/hypercomplex.h"
 #include "quaternia/algebra/quaternion.h"
 
@@ -107,6 +109,10 @@ Hypercomplex evaluateInAlgebra(const FormulaProgram& program, const Multiplicati
 std::pair<Hypercomplex, Hypercomplex> evaluateInAlgebraWithDerivative(
     const FormulaProgram& program, const MultiplicationTable& table, const Hypercomplex& z,
     const Hypercomplex& h);
+
+// f(w) on std::complex's principal branch: what a bicomplex program's kFunction applies to each
+// duplex component (without the derivative, which would double the cost of sin and cos).
+std::complex<double> complexFunctionValue(FormulaFunction function, const std::complex<double>& w);
 
 // runProgram and runProgramWithTangents for real components (the lane code includes the file
 // again in each SIMD target's namespace, as quaternion.h's arithmetic).

@@ -53,24 +53,6 @@ std::pair<Complex, Complex> complexFunction(FormulaFunction function, const Comp
     return {w, one};
 }
 
-// f(w) alone: complexFunction's first member, by the same calls.
-Complex complexFunctionValue(FormulaFunction function, const Complex& w) {
-    switch (function) {
-        case FormulaFunction::kExp:
-            return std::exp(w);
-        case FormulaFunction::kSin:
-            return std::sin(w);
-        case FormulaFunction::kCos:
-            return std::cos(w);
-        case FormulaFunction::kSinh:
-            return std::sinh(w);
-        case FormulaFunction::kCosh:
-            return std::cosh(w);
-        default:
-            return complexFunction(function, w).first;
-    }
-}
-
 Hypercomplex negated(const Hypercomplex& a) {
     return -1.0 * a;
 }
@@ -198,6 +180,23 @@ Hypercomplex elementOf(const Quaternion& q) {
 }
 
 }  // namespace
+
+Complex complexFunctionValue(FormulaFunction function, const Complex& w) {
+    switch (function) {
+        case FormulaFunction::kExp:
+            return std::exp(w);
+        case FormulaFunction::kSin:
+            return std::sin(w);
+        case FormulaFunction::kCos:
+            return std::cos(w);
+        case FormulaFunction::kSinh:
+            return std::sinh(w);
+        case FormulaFunction::kCosh:
+            return std::cosh(w);
+        default:
+            return complexFunction(function, w).first;
+    }
+}
 
 Hypercomplex evaluateInAlgebra(const FormulaProgram& program, const MultiplicationTable& table,
                                const Hypercomplex& z) {

@@ -21,23 +21,6 @@ Complex multiply(Complex a, Complex b) {
     return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
 }
 
-Complex functionValue(FormulaFunction f, Complex w) {
-    switch (f) {
-        case FormulaFunction::kExp:
-            return std::exp(w);
-        case FormulaFunction::kSin:
-            return std::sin(w);
-        case FormulaFunction::kCos:
-            return std::cos(w);
-        case FormulaFunction::kSinh:
-            return std::sinh(w);
-        case FormulaFunction::kCosh:
-            return std::cosh(w);
-        default:
-            return {std::nan(""), std::nan("")};  // supports() refuses the others
-    }
-}
-
 struct ValueArithmetic {
     Complex constant(Complex c, double) const { return c; }
     Complex add(Complex a, Complex b) const { return a + b; }
@@ -45,7 +28,7 @@ struct ValueArithmetic {
     Complex negate(Complex a) const { return -a; }
     Complex multiply(Complex a, Complex b) const { return quaternia::multiply(a, b); }
     Complex scale(double s, Complex a) const { return s * a; }
-    Complex function(FormulaFunction f, Complex a) const { return functionValue(f, a); }
+    Complex function(FormulaFunction f, Complex a) const { return complexFunctionValue(f, a); }
     Complex one() const { return Complex(1); }
 };
 

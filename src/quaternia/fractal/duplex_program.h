@@ -1,7 +1,7 @@
 // A bicomplex formula on one duplex component (issue 42). Every operation of the bicomplex
 // numbers (sums, products, powers, exp, sin, ...) acts on the duplex form (a, b) (hypercomplex.h,
 // duplexForm) component by component, so the formula is two complex maps f_1, f_2: the program
-// with every constant replaced by its duplex component. This runs such a map on three kinds of
+// with every constant replaced by its duplex component. This runs such a map on two kinds of
 // number:
 // - Complex: the value, the bicomplex orbit's reference arithmetic (HypercomplexJuliaSet iterates
 //   the functions' orbits this way, as it iterates the polynomials' by Horner's rule);
