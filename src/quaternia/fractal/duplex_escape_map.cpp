@@ -68,20 +68,18 @@ void distanceTransform(const float* f, float* out, int64_t n, int64_t stride,
 
 DuplexEscapeMap::DuplexEscapeMap(const DuplexComponentProgram& program, int maxIterations,
                                  double bailout, int finestLevel)
-    : program_(&program),
-      maxIterations_(maxIterations),
+    : maxIterations_(maxIterations),
       half_(std::sqrt(2.0) * bailout),
       finestLevel_(finestLevel),
       cells_(int64_t(1) << finestLevel),
       cellSize_(std::ldexp(2 * half_, -finestLevel)) {
     outside_.assign(size_t(cells_ * cells_), 0);
-    certify(0, 0, 0);
+    Certifying with{program, {}};
+    certify(with, 0, 0, 0);
     computeClearance();
-    program_ = nullptr;
-    registers_ = {};
 }
 
-DuplexEscapeMap::Verdict DuplexEscapeMap::iterate(ComplexDisc w) {
+DuplexEscapeMap::Verdict DuplexEscapeMap::iterate(Certifying& with, ComplexDisc w) const {
     double reach = 0;
     for (int n = 0;; ++n) {
         const double magnitude = std::sqrt(std::norm(w.centre));
@@ -90,17 +88,17 @@ DuplexEscapeMap::Verdict DuplexEscapeMap::iterate(ComplexDisc w) {
         if (!std::isfinite(upper)) return Verdict::kUndecided;
         reach = std::max(reach, upper);
         if (n + 1 >= maxIterations_) break;
-        w = program_->disc(w, registers_);
+        w = with.program.disc(w, with.registers);
     }
     return reach <= half_ ? Verdict::kBounded : Verdict::kUndecided;
 }
 
-void DuplexEscapeMap::certify(int level, int64_t x, int64_t y) {
+void DuplexEscapeMap::certify(Certifying& with, int level, int64_t x, int64_t y) {
     const double size = std::ldexp(2 * half_, -level);
     const ComplexDisc cell{
         Complex(-half_ + (double(x) + 0.5) * size, -half_ + (double(y) + 0.5) * size),
         size * std::sqrt(0.5) * (1 + kRelative) + kCellMargin};
-    switch (iterate(cell)) {
+    switch (iterate(with, cell)) {
         case Verdict::kOutside: {
             const int shift = finestLevel_ - level;
             const int64_t side = int64_t(1) << shift;
@@ -117,7 +115,7 @@ void DuplexEscapeMap::certify(int level, int64_t x, int64_t y) {
     if (level == finestLevel_) return;
     for (int64_t dy = 0; dy < 2; ++dy)
         for (int64_t dx = 0; dx < 2; ++dx)
-            certify(level + 1, 2 * x + dx, 2 * y + dy);
+            certify(with, level + 1, 2 * x + dx, 2 * y + dy);
 }
 
 void DuplexEscapeMap::computeClearance() {
@@ -186,10 +184,6 @@ bool DuplexEscapeMap::outside(Complex w) const {
     return cell < 0 ? std::isfinite(std::norm(w)) : outside_[size_t(cell)] > 0;
 }
 
-int64_t DuplexEscapeMap::countOutside() const {
-    return std::count_if(outside_.begin(), outside_.end(), [](uint16_t v) { return v > 0; });
-}
-
 std::shared_ptr<const DuplexEscapeMap> DuplexEscapeMap::shared(
     const DuplexComponentProgram& program, int maxIterations, double bailout, int finestLevel) {
     struct Entry {
@@ -221,9 +215,8 @@ std::shared_ptr<const DuplexEscapeMap> DuplexEscapeMap::shared(
 }
 
 DuplexEscapeMaps::DuplexEscapeMaps(const std::array<DuplexComponentProgram, 2>& programs,
-                                   bool sameComponents, int maxIterations, double bailout,
-                                   int finestLevel) {
-    if (sameComponents) {
+                                   int maxIterations, double bailout, int finestLevel) {
+    if (programs[0].signature() == programs[1].signature()) {
         maps_[0] = maps_[1] =
             DuplexEscapeMap::shared(programs[0], maxIterations, bailout, finestLevel);
         return;

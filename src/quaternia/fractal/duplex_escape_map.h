@@ -55,18 +55,18 @@ class DuplexEscapeMap {
                                                          int maxIterations, double bailout,
                                                          int finestLevel);
 
-    int cellsPerAxis() const { return int(cells_); }
-    int64_t countOutside() const;  // for tests and statistics
-
   private:
     enum class Verdict { kOutside, kBounded, kUndecided };
-    Verdict iterate(ComplexDisc cell);
-    void certify(int level, int64_t x, int64_t y);
+    // Scratch for certifying: the component's map and its registers.
+    struct Certifying {
+        const DuplexComponentProgram& program;
+        std::vector<ComplexDisc> registers;
+    };
+    Verdict iterate(Certifying& with, ComplexDisc cell) const;
+    void certify(Certifying& with, int level, int64_t x, int64_t y);
     void computeClearance();
     int64_t cellOf(std::complex<double> w) const;
 
-    const DuplexComponentProgram* program_;  // while certifying
-    std::vector<ComplexDisc> registers_;     // likewise
     int maxIterations_;
     double half_;      // sqrt(2) bailout, the square's half-width and E_i's radius
     int finestLevel_;  // cells_ = 2^finestLevel_
@@ -80,16 +80,15 @@ class DuplexEscapeMap {
 // Both components' maps, and what they prove about points q of the bicomplex algebra.
 class DuplexEscapeMaps {
   public:
-    // sameComponents: the two programs are the same map (every constant has equal duplex parts),
+    // Programs with equal signatures (every constant has equal duplex parts) are one map,
     // certified once.
-    DuplexEscapeMaps(const std::array<DuplexComponentProgram, 2>& programs, bool sameComponents,
-                     int maxIterations, double bailout, int finestLevel);
+    DuplexEscapeMaps(const std::array<DuplexComponentProgram, 2>& programs, int maxIterations,
+                     double bailout, int finestLevel);
 
     // A lower bound of |q - y| over y in K_N.
     double clearance(const Hypercomplex& q) const;
     // Whether a component's cell is outside: q is no point of K_N.
     bool outside(const Hypercomplex& q) const;
-    const DuplexEscapeMap& component(int i) const { return *maps_[size_t(i)]; }
 
   private:
     std::array<std::shared_ptr<const DuplexEscapeMap>, 2> maps_;  // the second may be the first

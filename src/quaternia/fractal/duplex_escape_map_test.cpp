@@ -95,8 +95,7 @@ TEST(DuplexEscapeMaps, NoPointWithinTheClearanceIsInTheSet) {
         const std::array<DuplexComponentProgram, 2> programs{
             DuplexComponentProgram(set.formula().program(), 0),
             DuplexComponentProgram(set.formula().program(), 1)};
-        const bool same = c[2] == 0 && c[3] == 0;
-        const DuplexEscapeMaps maps(programs, same, 12, 4, 8);
+        const DuplexEscapeMaps maps(programs, 12, 4, 8);
         int cleared = 0, inside = 0, tested = 0;
         for (int k = 0; k < 3000; ++k) {
             const Hypercomplex q = randomPoint(rng, 2.5);

@@ -155,6 +155,16 @@ std::optional<Fractal> octonionQuaternionSubalgebra(const FractalSettings& fract
         Slice::isometry(inverse(origin), {inverse(axes[0]), inverse(axes[1]), inverse(axes[2])}));
 }
 
+// What the slice map's rounding may move the images a and b of two points (b 0 for one point), in
+// every component: 1e-12 (1 + |q|), a few dozen operations of relative error 2^-53 each
+// (Fractal::excludesSegment).
+double sliceRounding(const Hypercomplex& a, const Hypercomplex& b = {}) {
+    double largest = 0;
+    for (size_t i = 0; i < a.size(); ++i)
+        largest = std::max({largest, std::fabs(a[i]), std::fabs(b[i])});
+    return 1e-12 * (1 + largest);
+}
+
 }  // namespace
 
 Fractal Fractal::fromSettings(const FractalSettings& fractal, const SliceSettings& slice,
@@ -183,10 +193,7 @@ DistanceEstimate Fractal::estimate(const Point3d& p) const {
 
 double Fractal::clearance(const Point3d& p) const {
     const Hypercomplex q = slice_.fromWorld(p);
-    double largest = 0;
-    for (double x : q)
-        largest = std::max(largest, std::fabs(x));
-    const double d = set_->clearance(q) - 1e-12 * (1 + largest);  // as excludesTube's rounding
+    const double d = set_->clearance(q) - sliceRounding(q);
     return d > 0 ? d * slice_.stepScale() : 0.0;
 }
 
@@ -200,10 +207,7 @@ bool Fractal::excludesTube(const Ray& ray, double t0, double t1, double radius) 
     }
     const Hypercomplex a = slice_.fromWorld(ray.at(t0 - extend)),
                        b = slice_.fromWorld(ray.at(t1 + extend));
-    double largest = 0;
-    for (size_t i = 0; i < a.size(); ++i)
-        largest = std::max({largest, std::fabs(a[i]), std::fabs(b[i])});
-    const double rounding = 1e-12 * (1 + largest);
+    const double rounding = sliceRounding(a, b);
     if (!(radius > 0)) return set_->excludesSegment(a, b, rounding);
     // Two unit directions across the ray: the square of half-width `radius` they span holds
     // the tube's disc, and the segment lengthened by `radius` at each end its caps.
@@ -226,10 +230,7 @@ bool Fractal::excludesTube(const Ray& ray, double t0, double t1, double radius) 
 
 bool Fractal::includesPoint(const Point3d& p) const {
     const Hypercomplex q = slice_.fromWorld(p);
-    double largest = 0;
-    for (double x : q)
-        largest = std::max(largest, std::fabs(x));
-    return set_->includesBox(q, 1e-12 * (1 + largest));
+    return set_->includesBox(q, sliceRounding(q));
 }
 
 Vector3d Fractal::normal(const Point3d& p) const {

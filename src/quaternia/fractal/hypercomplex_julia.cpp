@@ -84,11 +84,6 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
             const FormulaProgram& program = formula_.program();
             duplexPrograms_.emplace(std::array<DuplexComponentProgram, 2>{
                 DuplexComponentProgram(program, 0), DuplexComponentProgram(program, 1)});
-            sameComponents_ = true;
-            for (const Hypercomplex& e : program.elements()) {
-                const auto parts = duplexForm(e);
-                sameComponents_ = sameComponents_ && parts[0] == parts[1];
-            }
         }
         return;
     }
@@ -177,8 +172,8 @@ DistanceEstimate HypercomplexJuliaSet::estimate(const Hypercomplex& z0) const {
 
 const DuplexEscapeMaps& HypercomplexJuliaSet::escapeMaps() const {
     std::call_once(escapeMapsBuilt_, [&] {
-        escapeMaps_ = std::make_shared<const DuplexEscapeMaps>(
-            *duplexPrograms_, sameComponents_, maxIterations_, bailout_, kEscapeMapLevel);
+        escapeMaps_ = std::make_shared<const DuplexEscapeMaps>(*duplexPrograms_, maxIterations_,
+                                                               bailout_, kEscapeMapLevel);
     });
     return *escapeMaps_;
 }

@@ -116,7 +116,6 @@ class HypercomplexJuliaSet final : public JuliaSet {
     // the certified maps of both components, built once, on first use (a render's threads share
     // them).
     std::optional<std::array<DuplexComponentProgram, 2>> duplexPrograms_;
-    bool sameComponents_ = false;  // the two programs are the same map
     const DuplexEscapeMaps& escapeMaps() const;
     mutable std::once_flag escapeMapsBuilt_;
     mutable std::shared_ptr<const DuplexEscapeMaps> escapeMaps_;
