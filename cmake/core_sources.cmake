@@ -27,6 +27,7 @@ set(QUATERNIA_CORE_SOURCES
   quaternia/algebra/formula_expand.cpp
   quaternia/algebra/formula_program.cpp
   quaternia/algebra/formula_program_evaluate.cpp
+  quaternia/algebra/orbit_batch.cpp
   quaternia/algebra/program_bounds.cpp
   quaternia/algebra/hypercomplex.cpp
   quaternia/algebra/constant_text.cpp

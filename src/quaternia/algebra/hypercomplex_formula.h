@@ -30,6 +30,7 @@ class HypercomplexFormula {
 
     Algebra algebra() const { return program_.algebra(); }
     int dimension() const { return table_->dimension(); }
+    const MultiplicationTable& table() const { return *table_; }
     int degree() const { return bounds_.degree; }
     const FormulaProgram& program() const { return program_; }
 

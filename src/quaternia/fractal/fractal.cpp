@@ -1,5 +1,7 @@
 #include "quaternia/fractal/fractal.h"
 
+#include "quaternia/algebra/orbit_batch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -195,6 +197,21 @@ double Fractal::clearance(const Point3d& p) const {
     const Hypercomplex q = slice_.fromWorld(p);
     const double d = set_->clearance(q) - sliceRounding(q);
     return d > 0 ? d * slice_.stepScale() : 0.0;
+}
+
+int64_t Fractal::firstInsideSample(const Ray& ray, double t0, double step, int64_t k0,
+                                   int64_t k1) const {
+    // Up to 64 samples at a time: the lanes take the next sample as each orbit ends.
+    std::array<Hypercomplex, 64> points;
+    for (int64_t k = k0; k <= k1;) {
+        const int count = int(std::min<int64_t>(int64_t(points.size()), k1 - k + 1));
+        for (int i = 0; i < count; ++i)
+            points[size_t(i)] = slice_.fromWorld(ray.at(t0 + double(k + i) * step));
+        const int inside = set_->firstInside(points.data(), count);
+        if (inside < count) return k + inside;
+        k += count;
+    }
+    return k1 + 1;
 }
 
 bool Fractal::excludesTube(const Ray& ray, double t0, double t1, double radius) const {

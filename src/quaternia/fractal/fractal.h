@@ -62,6 +62,9 @@ class Fractal {
     bool containsByOrbit(const Point3d& p) const {
         return set_->containsByOrbit(slice_.fromWorld(p));
     }
+    // The least k in [k0, k1] whose sample ray.at(t0 + k step) contains() takes, or k1 + 1: the
+    // samples in batches where the set's orbits run so (JuliaSet::firstInside).
+    int64_t firstInsideSample(const Ray& ray, double t0, double step, int64_t k0, int64_t k1) const;
     // Whether clearance() may be positive (JuliaSet::hasClearance).
     bool hasClearance() const { return set_->hasClearance(); }
     // A proven lower bound of the 3D distance from p to the set (JuliaSet::clearance through the

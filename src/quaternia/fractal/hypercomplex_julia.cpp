@@ -1,5 +1,7 @@
 #include "quaternia/fractal/hypercomplex_julia.h"
 
+#include "quaternia/algebra/orbit_batch.h"
+
 #include "quaternia/interval/interval_element.h"
 
 #include <algorithm>
@@ -62,7 +64,9 @@ HypercomplexJuliaSet::HypercomplexJuliaSet(HypercomplexFormula formula, int maxI
     : formula_(std::move(formula)),
       rules_(&algebraRules(formula_.algebra())),
       maxIterations_(maxIterations),
-      intervalExtension_(!withoutIntervalExtension(formula_.program())) {
+      intervalExtension_(!withoutIntervalExtension(formula_.program())),
+      batchesOrbits_(rules_->escape != EscapeRule::kDuplexComponents &&
+                     batchesOrbits(formula_.program())) {
     const std::string algebra(algebraName(formula_.algebra()));
     const int d = formula_.degree();
     if (d < 2 && !formula_.transcendental()) {
@@ -210,6 +214,12 @@ bool HypercomplexJuliaSet::containsByOrbit(const Hypercomplex& z0) const {
         if (n + 1 >= maxIterations_) return true;
         z = formula_.evaluate(z);
     }
+}
+
+int HypercomplexJuliaSet::firstInside(const Hypercomplex* points, int count) const {
+    if (!batchesOrbits_) return JuliaSet::firstInside(points, count);
+    return firstInsideOfBatch(formula_.program(), formula_.table(), points, count, maxIterations_,
+                              bailout_ * bailout_);
 }
 
 DistanceEstimate HypercomplexJuliaSet::multiplicativeEstimate(const Hypercomplex& z0) const {

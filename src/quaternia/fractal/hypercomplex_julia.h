@@ -53,6 +53,10 @@ class HypercomplexJuliaSet final : public JuliaSet {
     // fixed-step marcher skips by.
     bool contains(const Hypercomplex& z0) const override;
     bool containsByOrbit(const Hypercomplex& z0) const override;
+    // The table's arithmetic in batches (algebra/orbit_batch.h) where the orbit is the table's
+    // loop: every algebra but the quaternions (their programs) and the bicomplex numbers (duplex
+    // form).
+    int firstInside(const Hypercomplex* points, int count) const override;
     bool hasClearance() const override { return duplexPrograms_.has_value(); }
     double clearance(const Hypercomplex& z0) const override;
     // ln|z_M| after exactly M iterations (or where it overflows), and the M the normal takes at
@@ -107,6 +111,7 @@ class HypercomplexJuliaSet final : public JuliaSet {
     double escapeRadius_;
     DistanceKind kind_;
     bool intervalExtension_ = false;
+    bool batchesOrbits_ = false;  // firstInside by orbit_batch.h
     // bicomplex: the two complex polynomials of the duplex form (coefficients, lowest degree
     // first) and their escape radii
     std::array<std::vector<std::complex<double>>, 2> componentCoefficients_;

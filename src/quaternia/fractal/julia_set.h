@@ -41,6 +41,14 @@ class JuliaSet {
     // The same by following the orbit alone, whatever else contains() may consult (the
     // certified maps of DuplexEscapeMaps): the reference the fast answers are tested against.
     virtual bool containsByOrbit(const Hypercomplex& z0) const { return contains(z0); }
+    // The index of the first of points[0 .. count) that contains() takes, or count if none: each
+    // decided as contains() decides it. Sets whose orbits run in batches (algebra/orbit_batch.h)
+    // test up to kOrbitBatch points at once.
+    virtual int firstInside(const Hypercomplex* points, int count) const {
+        for (int i = 0; i < count; ++i)
+            if (contains(points[i])) return i;
+        return count;
+    }
     // Whether clearance() may be positive: a proven lower bound of the distance to K_N that is a
     // lookup, far cheaper than an orbit, for the fixed-step marcher to skip the samples within it
     // (render/march.h, firstSampleInside).

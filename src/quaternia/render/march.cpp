@@ -101,9 +101,6 @@ SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double 
             ++first;
         }
         ProofRuns runs{std::clamp<int64_t>(firstSpan, 1, kLongestSpan)};
-        // Near the surface runs of two fail again and again: after such a failure this many
-        // samples are tested one by one before a run is tried again (doubling while it fails).
-        int64_t oneByOne = 0, backOff = 1;
         const bool clearance = fractal.hasClearance();
         const double along = length(ray.direction) * step;
         for (int64_t k = first; k <= last && crossing.steps < maxSteps;) {
@@ -123,30 +120,28 @@ SampleCrossing firstSampleInside(const Fractal& fractal, const Ray& ray, double 
                 ++k;
                 continue;
             }
-            if (runs.span > 1 && oneByOne == 0) {
-                const int64_t end = std::min(k + runs.span - 1, last);
+            const int64_t end = std::min(k + runs.span - 1, last);
+            if (runs.span > kTestedSpan) {
                 if (fractal.excludesSegment(ray, at(k), at(end))) {
                     crossing.tOutside = at(end);
                     k = end + 1;
-                    backOff = 1;
                     runs.proved();
                 } else {
-                    if (runs.span == 2) {
-                        oneByOne = backOff;
-                        backOff = std::min<int64_t>(2 * backOff, kLongestOneByOne);
-                    }
                     runs.failed();
                 }
                 continue;
             }
-            if (fractal.contains(ray.at(at(k)))) {
-                crossing.tInside = at(k);
+            // A short run's samples, tested together (Fractal::firstInsideSample), cost less
+            // than a proof that may fail; past them the runs lengthen as after a proof.
+            const int64_t inside = fractal.firstInsideSample(ray, tStart, step, k, end);
+            if (inside <= end) {
+                crossing.tInside = at(inside);
+                if (inside > k) crossing.tOutside = at(inside - 1);
                 return crossing;
             }
-            crossing.tOutside = at(k);
-            ++k;
-            if (oneByOne > 0) --oneByOne;
-            runs.span = std::max<int64_t>(runs.span, 2);
+            crossing.tOutside = at(end);
+            k = end + 1;
+            runs.proved();
         }
         return crossing;
     }

@@ -92,10 +92,11 @@ struct MarchResult {
 // interval/function_forms.h, and real powers) runs of samples are
 // crossed at once where Fractal::excludesSegment proves the segment that holds them outside K_N,
 // the runs doubled after two proofs in a row (from kFirstSpan up to kLongestSpan samples) and
-// halved after each failure down to a single sample (and after a run of two fails, up to
-// kLongestOneByOne samples are tested one by one before runs are tried again): the samples
-// tested are the same, only those proven outside are skipped, so the first inside sample is the
-// one plain fixed steps would find (Marching.ProvenRunsFindThePlainStepsSample).
+// halved after each failure; a run of kTestedSpan samples or fewer is not proven but its
+// samples tested together (Fractal::firstInsideSample: the orbits in lanes, algebra/
+// orbit_batch.h), which costs less than a proof there and never fails. The samples tested are
+// the same, only those proven outside are skipped, so the first inside sample is the one plain
+// fixed steps would find (Marching.ProvenRunsFindThePlainStepsSample).
 // Elsewhere a sample skips ahead by the set's proven distance (its Lipschitz bound) where it is
 // longer than the step.
 struct SampleCrossing {
@@ -105,7 +106,13 @@ struct SampleCrossing {
     int64_t iterations = 0;         // polynomial evaluations where counted (the distance bounds)
     double closest = 1;             // the least distance bound met (where they are taken)
 };
-inline constexpr int64_t kFirstSpan = 64, kLongestSpan = 1024, kLongestOneByOne = 64;
+inline constexpr int64_t kFirstSpan = 64, kLongestSpan = 1024;
+// Runs this short are tested sample by sample rather than proven: a proof of a run costs about
+// as much as 16 orbits in the lanes (coquaternion z^2 + c), and fails near the surface.
+// Measured on the default coquaternion scene at 480x270: 8 to 32 samples within 3% of each
+// other, 64 9% slower; the 1080p frame 1.5 times as fast (bench/results/run-2026-12-05-1650-avx3.md
+// before, run-2026-12-05-1651-avx3.md after).
+inline constexpr int64_t kTestedSpan = 16;
 // The length of the next run to prove, in samples: doubled after two proofs in a row, up to
 // kLongestSpan, and halved after a failure (a ray's runs here, a block's cone's in
 // proven_cones.h).

@@ -1,0 +1,201 @@
+#include "quaternia/algebra/orbit_batch.h"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace quaternia {
+namespace {
+
+using Op = Instruction::Op;
+constexpr std::size_t kLanes = std::size_t(kOrbitBatch);
+using Lane = std::array<double, kLanes>;
+
+// D components of kLanes points, component by component. Components D .. 7 of the one-point
+// arithmetic stay zero (constants, products and linear maps leave them so) and add nothing to
+// its norm, so they are not kept.
+template <int D>
+using Lanes = std::array<Lane, D>;
+
+// evaluateInAlgebra's product (MultiplicationTable::multiplyFixed): component k sums
+// sign * (a_i b_partner) over i in order, from 0. `out` may be a or b.
+template <int D>
+void multiply(const MultiplicationTable& table, const Lanes<D>& a, const Lanes<D>& b,
+              Lanes<D>& out) {
+    Lanes<D> product;
+    for (int k = 0; k < D; ++k) {
+        Lane sum{};
+        for (int i = 0; i < D; ++i) {
+            // sum + sign * (x y) with sign +-1 is sum + x y or sum - x y, exactly.
+            const Lane& x = a[std::size_t(i)];
+            const Lane& y = b[std::size_t(table.outputPartner(k, i))];
+            if (table.outputSign(k, i) > 0) {
+                for (std::size_t l = 0; l < kLanes; ++l)
+                    sum[l] += x[l] * y[l];
+            } else {
+                for (std::size_t l = 0; l < kLanes; ++l)
+                    sum[l] -= x[l] * y[l];
+            }
+        }
+        product[std::size_t(k)] = sum;
+    }
+    out = product;
+}
+
+// The program on every lane into `value`, as formula_program_evaluate.cpp's run<false>.
+template <int D>
+void run(const FormulaProgram& program, const MultiplicationTable& table, const Lanes<D>& z,
+         std::vector<Lanes<D>>& value) {
+    const std::vector<Instruction>& code = program.instructions();
+    const std::vector<Hypercomplex>& constants = program.elements();
+    const double* factors = program.factors().data();
+    for (std::size_t n = 0; n < code.size(); ++n) {
+        const Instruction& i = code[n];
+        const std::size_t a = std::size_t(i.a), b = std::size_t(i.b);
+        Lanes<D>& out = value[n];
+        switch (i.op) {
+            case Op::kZ:
+                out = z;
+                break;
+            case Op::kConstant:
+                for (std::size_t k = 0; k < std::size_t(D); ++k)
+                    out[k].fill(constants[std::size_t(i.index)][k]);
+                break;
+            case Op::kAdd:
+            case Op::kSubtract: {
+                const double sign = i.op == Op::kAdd ? 1 : -1;
+                for (std::size_t k = 0; k < std::size_t(D); ++k)
+                    for (std::size_t l = 0; l < kLanes; ++l)
+                        out[k][l] = sign > 0 ? value[a][k][l] + value[b][k][l]
+                                             : value[a][k][l] - value[b][k][l];
+                break;
+            }
+            case Op::kNegate:
+            case Op::kScale: {
+                // negated(x) is -1.0 * x.
+                const double f = i.op == Op::kNegate ? -1.0 : factors[i.index];
+                for (std::size_t k = 0; k < std::size_t(D); ++k)
+                    for (std::size_t l = 0; l < kLanes; ++l)
+                        out[k][l] = f * value[a][k][l];
+                break;
+            }
+            case Op::kMultiply:
+            case Op::kSquare:
+                multiply<D>(table, value[a], value[i.op == Op::kSquare ? a : b], out);
+                break;
+            case Op::kLinear: {
+                // linearMap: components 0 .. 3 by the matrix, the others zero.
+                const double* m = factors + i.index;
+                Lanes<D> mapped{};
+                for (std::size_t r = 0; r < 4; ++r)
+                    for (std::size_t l = 0; l < kLanes; ++l)
+                        mapped[r][l] =
+                            m[r * 4 + 0] * value[a][0][l] + m[r * 4 + 1] * value[a][1][l] +
+                            m[r * 4 + 2] * value[a][2][l] + m[r * 4 + 3] * value[a][3][l];
+                out = mapped;
+                break;
+            }
+            case Op::kPower: {
+                // x (x (... x)), x^0 = 1.
+                if (i.index == 0) {
+                    out = Lanes<D>{};
+                    out[0].fill(1);
+                    break;
+                }
+                Lanes<D> power = value[a];
+                for (int e = 1; e < i.index; ++e)
+                    multiply<D>(table, value[a], power, power);
+                out = power;
+                break;
+            }
+            case Op::kFunction:
+            case Op::kRealPower:
+                break;  // refused by batchesOrbits
+        }
+    }
+}
+
+// Each lane follows one point's orbit and takes the next point as soon as its own is decided,
+// so that a point costs its own iterations, not the slowest of a fixed group's. Points past
+// the first found inside are not needed.
+template <int D>
+int firstInside(const FormulaProgram& program, const MultiplicationTable& table,
+                const Hypercomplex* points, int count, int maxIterations, double bailoutSquared) {
+    thread_local std::vector<Lanes<D>> registers;
+    if (registers.size() < program.instructions().size())
+        registers.resize(program.instructions().size());
+    Lanes<D> z{};
+    std::array<int, kLanes> point{}, iteration{};
+    int next = 0, first = count;
+    // Gives lane l the next point whose orbit decides something, deciding at once those whose
+    // z_0 escapes or whose N is 1; -1 where none is left.
+    auto refill = [&](std::size_t l) {
+        for (;;) {
+            if (next >= first) {
+                point[l] = -1;
+                return;
+            }
+            const Hypercomplex& p = points[next];
+            if (!(normSquared(p) > bailoutSquared)) {
+                if (maxIterations <= 1) {
+                    first = next;
+                    point[l] = -1;
+                    return;
+                }
+                for (std::size_t k = 0; k < std::size_t(D); ++k)
+                    z[k][l] = p[k];
+                point[l] = next++;
+                iteration[l] = 0;
+                return;
+            }
+            ++next;
+        }
+    };
+    for (std::size_t l = 0; l < kLanes; ++l)
+        refill(l);
+    for (;;) {
+        bool active = false;
+        for (std::size_t l = 0; l < kLanes; ++l)
+            active = active || point[l] >= 0;
+        if (!active) return first;
+        run<D>(program, table, z, registers);
+        z = registers[std::size_t(program.result())];
+        // normSquared: the squares summed in order, from 0.
+        Lane norm{};
+        for (std::size_t k = 0; k < std::size_t(D); ++k)
+            for (std::size_t l = 0; l < kLanes; ++l)
+                norm[l] += z[k][l] * z[k][l];
+        for (std::size_t l = 0; l < kLanes; ++l) {
+            if (point[l] < 0) continue;
+            if (point[l] > first) {
+                point[l] = -1;
+            } else if (norm[l] > bailoutSquared) {
+                refill(l);
+            } else if (++iteration[l] + 1 >= maxIterations) {
+                first = std::min(first, point[l]);
+                refill(l);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+bool batchesOrbits(const FormulaProgram& program) {
+    if (program.algebra() == Algebra::kQuaternion) return false;
+    for (const Instruction& i : program.instructions())
+        if (i.op == Op::kFunction || i.op == Op::kRealPower) return false;
+    return true;
+}
+
+int firstInsideOfBatch(const FormulaProgram& program, const MultiplicationTable& table,
+                       const Hypercomplex* points, int count, int maxIterations,
+                       double bailoutSquared) {
+    if (count <= 0) return 0;
+    return table.dimension() == 4
+               ? firstInside<4>(program, table, points, count, maxIterations, bailoutSquared)
+               : firstInside<8>(program, table, points, count, maxIterations, bailoutSquared);
+}
+
+}  // namespace quaternia
