@@ -19,11 +19,10 @@ template <int D>
 using Lanes = std::array<Lane, D>;
 
 // evaluateInAlgebra's product (MultiplicationTable::multiplyFixed): component k sums
-// sign * (a_i b_partner) over i in order, from 0. `out` may be a or b.
+// sign * (a_i b_partner) over i in order, from 0. `product` is neither a nor b.
 template <int D>
 void multiply(const MultiplicationTable& table, const Lanes<D>& a, const Lanes<D>& b,
-              Lanes<D>& out) {
-    Lanes<D> product;
+              Lanes<D>& product) {
     for (int k = 0; k < D; ++k) {
         Lane sum{};
         for (int i = 0; i < D; ++i) {
@@ -40,15 +39,15 @@ void multiply(const MultiplicationTable& table, const Lanes<D>& a, const Lanes<D
         }
         product[std::size_t(k)] = sum;
     }
-    out = product;
 }
 
-// The program on every lane into `value`, as formula_program_evaluate.cpp's run<false>.
+// The program on every lane into `value`, as formula_program_evaluate.cpp's run<false>. The
+// lanes' points are in the register of the first kZ instruction, `zRegister`; the constants'
+// registers are filled once, by fillConstants.
 template <int D>
-void run(const FormulaProgram& program, const MultiplicationTable& table, const Lanes<D>& z,
+void run(const FormulaProgram& program, const MultiplicationTable& table, std::size_t zRegister,
          std::vector<Lanes<D>>& value) {
     const std::vector<Instruction>& code = program.instructions();
-    const std::vector<Hypercomplex>& constants = program.elements();
     const double* factors = program.factors().data();
     for (std::size_t n = 0; n < code.size(); ++n) {
         const Instruction& i = code[n];
@@ -56,11 +55,9 @@ void run(const FormulaProgram& program, const MultiplicationTable& table, const 
         Lanes<D>& out = value[n];
         switch (i.op) {
             case Op::kZ:
-                out = z;
+                if (n != zRegister) out = value[zRegister];
                 break;
             case Op::kConstant:
-                for (std::size_t k = 0; k < std::size_t(D); ++k)
-                    out[k].fill(constants[std::size_t(i.index)][k]);
                 break;
             case Op::kAdd:
             case Op::kSubtract: {
@@ -103,10 +100,15 @@ void run(const FormulaProgram& program, const MultiplicationTable& table, const 
                     out[0].fill(1);
                     break;
                 }
-                Lanes<D> power = value[a];
-                for (int e = 1; e < i.index; ++e)
-                    multiply<D>(table, value[a], power, power);
-                out = power;
+                if (i.index == 1) {
+                    out = value[a];
+                    break;
+                }
+                multiply<D>(table, value[a], value[a], out);
+                for (int e = 2; e < i.index; ++e) {
+                    const Lanes<D> power = out;
+                    multiply<D>(table, value[a], power, out);
+                }
                 break;
             }
             case Op::kFunction:
@@ -116,6 +118,21 @@ void run(const FormulaProgram& program, const MultiplicationTable& table, const 
     }
 }
 
+// The registers of kConstant instructions, which no instruction overwrites; and the first kZ
+// register, where the lanes' points are kept (the program's size if it has none).
+template <int D>
+std::size_t fillConstants(const FormulaProgram& program, std::vector<Lanes<D>>& value) {
+    const std::vector<Instruction>& code = program.instructions();
+    std::size_t zRegister = code.size();
+    for (std::size_t n = 0; n < code.size(); ++n) {
+        if (code[n].op == Op::kZ && zRegister == code.size()) zRegister = n;
+        if (code[n].op != Op::kConstant) continue;
+        for (std::size_t k = 0; k < std::size_t(D); ++k)
+            value[n][k].fill(program.elements()[std::size_t(code[n].index)][k]);
+    }
+    return zRegister;
+}
+
 // Each lane follows one point's orbit and takes the next point as soon as its own is decided,
 // so that a point costs its own iterations, not the slowest of a fixed group's. Points past
 // the first found inside are not needed.
@@ -123,9 +140,12 @@ template <int D>
 int firstInside(const FormulaProgram& program, const MultiplicationTable& table,
                 const Hypercomplex* points, int count, int maxIterations, double bailoutSquared) {
     thread_local std::vector<Lanes<D>> registers;
-    if (registers.size() < program.instructions().size())
-        registers.resize(program.instructions().size());
-    Lanes<D> z{};
+    // One register past the program's: the points' own where the program has no kZ.
+    if (registers.size() < program.instructions().size() + 1)
+        registers.resize(program.instructions().size() + 1);
+    const std::size_t zRegister = fillConstants<D>(program, registers);
+    const std::size_t result = std::size_t(program.result());
+    Lanes<D>& z = registers[zRegister];
     std::array<int, kLanes> point{}, iteration{};
     int next = 0, first = count;
     // Gives lane l the next point whose orbit decides something, deciding at once those whose
@@ -159,8 +179,8 @@ int firstInside(const FormulaProgram& program, const MultiplicationTable& table,
         for (std::size_t l = 0; l < kLanes; ++l)
             active = active || point[l] >= 0;
         if (!active) return first;
-        run<D>(program, table, z, registers);
-        z = registers[std::size_t(program.result())];
+        run<D>(program, table, zRegister, registers);
+        if (result != zRegister) z = registers[result];
         // normSquared: the squares summed in order, from 0.
         Lane norm{};
         for (std::size_t k = 0; k < std::size_t(D); ++k)
