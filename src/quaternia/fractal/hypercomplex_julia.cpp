@@ -208,6 +208,11 @@ bool HypercomplexJuliaSet::containsByOrbit(const Hypercomplex& z0) const {
                                        : horner(componentCoefficients_[i], w[i]);
         }
     }
+    if (batchesOrbits_) {
+        // The same loop without the one-point interpreter's registers of eight components.
+        return firstInsideOfBatch(formula_.program(), formula_.table(), &z0, 1, maxIterations_,
+                                  bailoutSquared) == 0;
+    }
     Hypercomplex z = z0;
     for (int n = 0;; ++n) {
         if (normSquared(z) > bailoutSquared) return false;
