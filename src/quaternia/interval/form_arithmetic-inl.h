@@ -76,6 +76,21 @@ struct FixedArithmetic {
         return m;
     }
 
+    // Component o of a product from its sums: the centre's, each symbol's square's (e_s^2 =
+    // 1/2 + [-1/2, 1/2], half of it in the centre and half in the radius) and first-order
+    // terms, and the rest of the radius.
+    static void setComponent(Form& r, std::size_t o, double cc, const std::array<double, S>& ss,
+                             const std::array<double, S>& cs, double radius) {
+        double half = 0, halfMagnitude = 0;
+        for (std::size_t s = 0; s < kS; ++s) {
+            half += 0.5 * ss[s];
+            halfMagnitude += 0.5 * std::fabs(ss[s]);
+            r.slope[s][o] = cs[s];
+        }
+        r.centre[o] = cc + half;
+        r.radius[o] = halfMagnitude + radius;
+    }
+
     // One pass over the table for the sums of a product (header comment): with several symbols
     // each e_s^2 = 1/2 + [-1/2, 1/2] as for one, and each e_s e_t (s != t) in [-1, 1], its
     // bound in the radius.
@@ -108,21 +123,52 @@ struct FixedArithmetic {
                 left += xm[a] * y.radius[b];
                 right += x.radius[a] * yAll[b];
             }
-            const std::size_t o = std::size_t(k);
-            double half = 0, halfMagnitude = 0;
-            for (std::size_t s = 0; s < kS; ++s) {
-                half += 0.5 * ss[s];
-                halfMagnitude += 0.5 * std::fabs(ss[s]);
-                r.slope[s][o] = cs[s];
-            }
-            r.centre[o] = cc + half;
-            r.radius[o] = halfMagnitude + cross + left + right + 3 * kGamma * rounding;
+            setComponent(r, std::size_t(k), cc, ss, cs,
+                         cross + left + right + 3 * kGamma * rounding);
         }
         inflate(r.radius, D);
         return r;
     }
+    // x x by the table's symmetry: in every algebra here e_i e_j = +-e_j e_i, so component k's
+    // terms pair up, x_i x_j with x_j x_i (partner(k, j) = i). For the same point the two are
+    // equal reals: a pair of equal signs is one term twice, a pair of opposite signs cancels
+    // exactly and adds nothing, not even its remainder (the product of two forms would count
+    // both terms' remainders). Otherwise the terms are product()'s.
     static Form square(const MultiplicationTable& table, const Form& x) {
-        return product(table, x, x);
+        const TableByOutput<D> byOutput{table};
+        const std::array<double, D> xm = magnitudes(x);
+        std::array<double, D> xAll;
+        for (std::size_t k = 0; k < kD; ++k)
+            xAll[k] = xm[k] + x.radius[k];
+        Form r;
+        for (int k = 0; k < D; ++k) {
+            double cc = 0, rounding = 0, remainder = 0, cross = 0;
+            std::array<double, S> ss{}, cs{};
+            for (int i = 0; i < D; ++i) {
+                const int j = byOutput.partner(k, i);
+                if (j < i) continue;  // counted with its pair
+                double weight = byOutput.sign(k, i);
+                if (j != i) {
+                    if (byOutput.sign(k, j) != weight) continue;  // x_i x_j - x_j x_i = 0
+                    weight *= 2;
+                }
+                const std::size_t a = std::size_t(i), b = std::size_t(j);
+                const double w = std::fabs(weight);
+                cc += weight * (x.centre[a] * x.centre[b]);
+                for (std::size_t s = 0; s < kS; ++s) {
+                    ss[s] += weight * (x.slope[s][a] * x.slope[s][b]);
+                    cs[s] += weight * (x.centre[a] * x.slope[s][b] + x.slope[s][a] * x.centre[b]);
+                    for (std::size_t t = 0; t < kS; ++t)
+                        if (t != s) cross += w * std::fabs(x.slope[s][a] * x.slope[t][b]);
+                }
+                rounding += w * (xm[a] * xm[b]);
+                // product()'s left and right: (c + s e) r' + r (c' + s' e + r').
+                remainder += w * (xm[a] * x.radius[b] + x.radius[a] * xAll[b]);
+            }
+            setComponent(r, std::size_t(k), cc, ss, cs, cross + remainder + 3 * kGamma * rounding);
+        }
+        inflate(r.radius, D);
+        return r;
     }
 
     static Form combined(const Form& x, const Form& y, double sign) {

@@ -350,5 +350,93 @@ TEST(SegmentForm, SegmentsLeavingTheBallHoldNoPointOfTheSet) {
     }
 }
 
+// A tube from a random point of components within `scale`, its segment's and its two across
+// directions' components within `length` and `width`.
+TubeForm randomTube(std::mt19937_64& rng, int d, double scale, double length, double width,
+                    double thickness) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const Hypercomplex from = randomElement(rng, d, scale);
+    Hypercomplex to = from, across1{}, across2{};
+    for (int k = 0; k < d; ++k) {
+        to[size_t(k)] += length * unit(rng);
+        across1[size_t(k)] = width * unit(rng);
+        across2[size_t(k)] = width * unit(rng);
+    }
+    return tubeAbout(from, to, across1, across2, thickness, d);
+}
+
+// p of every point of a tube lies in the image form at the same symbols: the products of
+// different symbols (e_s e_t, in the remainder) matter here, the tubes as wide as long.
+TEST(TubeForm, ProgramsHoldTheirValuesOverTheTube) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    for (const AlgebraFormula& test : formulasOfEveryAlgebra()) {
+        if (test.algebra == Algebra::kBicomplex) continue;  // duplex forms: segments only
+        const int d = algebraDimension(test.algebra);
+        const HypercomplexFormula formula(Formula::parse(test.formula), test.algebra,
+                                          randomElement(rng, d, 0.5));
+        const MultiplicationTable& table = MultiplicationTable::of(test.algebra);
+        for (int trial = 0; trial < 200; ++trial) {
+            const double size = trial % 2 ? 0.3 : 0.02, thickness = trial % 3 ? 0 : 0.005;
+            const TubeForm tube = randomTube(rng, d, 1.2, size, size, thickness);
+            const TubeForm image = evaluateOnTube(formula.program(), table, tube);
+            for (int point = 0; point < 16; ++point) {
+                // The corners of the symbols' cube first, where the products of symbols peak.
+                std::array<double, 3> e;
+                for (size_t s = 0; s < 3; ++s)
+                    e[s] = point < 8 ? ((point >> s) & 1 ? 1.0 : -1.0) : unit(rng);
+                // Summed in tubeContains's order, so that only the thickness separates them.
+                Hypercomplex z = tube.centre;
+                for (int k = 0; k < d; ++k) {
+                    for (size_t s = 0; s < 3; ++s)
+                        z[size_t(k)] += tube.slopes[s][size_t(k)] * e[s];
+                    z[size_t(k)] += thickness * unit(rng);
+                }
+                ASSERT_TRUE(tubeContains(tube, e, z, d));
+                ASSERT_TRUE(tubeContains(image, e, formula.evaluate(z), d))
+                    << test.formula << " in " << algebraName(test.algebra);
+            }
+        }
+    }
+}
+
+// Tubes (three noise symbols) proven outside hold no point of K_N: points of the segment swept
+// across both directions and thickened, sampled. The squares in these formulas are the table's
+// symmetric square (form_arithmetic-inl.h), whose cancelled pairs add no remainder.
+TEST(TubeForm, TubesLeavingTheBallHoldNoPointOfTheSet) {
+    std::mt19937_64 rng(29);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const std::vector<std::pair<Algebra, std::string>> cases = {
+        {Algebra::kCoquaternion, "z^2 + c"},     {Algebra::kCoquaternion, "i z^2 j + z^3 + c"},
+        {Algebra::kBiquaternion, "z^2 + c"},     {Algebra::kBiquaternion, "(z + 0.3j)^2 + c"},
+        {Algebra::kOctonion, "(i z) (z j) + c"}, {Algebra::kQuaternion, "z^4 + c"}};
+    for (const auto& [algebra, text] : cases) {
+        const int d = algebraDimension(algebra);
+        const HypercomplexFormula formula(Formula::parse(text), algebra,
+                                          randomElement(rng, d, 0.5));
+        const MultiplicationTable& table = MultiplicationTable::of(algebra);
+        int proven = 0;
+        for (int trial = 0; trial < 1500; ++trial) {
+            const double length = trial % 2 ? 0.3 : 0.03, width = trial % 3 ? 0.02 : 0.002;
+            const double thickness = trial % 5 ? 0 : 1e-3;
+            const TubeForm tube = randomTube(rng, d, 1.3, length, width, thickness);
+            if (!tubeLeavesBall(formula.program(), table, tube, kIterations, kBailout)) continue;
+            ++proven;
+            for (int point = 0; point < 24; ++point) {
+                Hypercomplex z = tube.centre;
+                for (const Hypercomplex& slope : tube.slopes)
+                    z = z + unit(rng) * slope;
+                for (int k = 0; k < d; ++k)
+                    z[size_t(k)] += thickness * unit(rng);
+                ASSERT_FALSE(inSet(formula, z, kIterations, kBailout))
+                    << text << " in " << algebraName(algebra);
+            }
+        }
+        // Enough tubes proven, and not all, for the samples to test something.
+        EXPECT_GT(proven, 150) << text << " in " << algebraName(algebra);
+        EXPECT_LT(proven, 1500) << text << " in " << algebraName(algebra);
+    }
+}
+
 }  // namespace
 }  // namespace quaternia

@@ -111,6 +111,34 @@ TubeForm tubeAbout(const Hypercomplex& from, const Hypercomplex& to, const Hyper
     return form;
 }
 
+TubeForm evaluateOnTube(const FormulaProgram& program, const MultiplicationTable& table,
+                        const TubeForm& form) {
+    return withDimension<TubeForm::kSymbols>(table.dimension(), [&](auto arithmetic) {
+        using A = decltype(arithmetic);
+        const auto image =
+            interval_forms::run<A>(program, table, A::narrowed(form), A::registers());
+        TubeForm r;
+        for (std::size_t k = 0; k < A::kD; ++k) {
+            r.centre[k] = image.centre[k];
+            for (std::size_t s = 0; s < A::kS; ++s)
+                r.slopes[s][k] = image.slope[s][k];
+            r.radius[k] = image.radius[k];
+        }
+        return r;
+    });
+}
+
+bool tubeContains(const TubeForm& form, const std::array<double, TubeForm::kSymbols>& e,
+                  const Hypercomplex& point, int dimension) {
+    for (std::size_t k = 0; k < std::size_t(dimension); ++k) {
+        double value = form.centre[k];
+        for (std::size_t s = 0; s < e.size(); ++s)
+            value += form.slopes[s][k] * e[s];
+        if (!(std::fabs(point[k] - value) <= form.radius[k])) return false;
+    }
+    return true;
+}
+
 bool tubeLeavesBall(const FormulaProgram& program, const MultiplicationTable& table,
                     const TubeForm& form, int maxIterations, double bailout) {
     return withArithmetic<TubeForm::kSymbols>(table, [&](auto arithmetic) {

@@ -75,6 +75,11 @@ struct TubeForm {
 // thickened by `thickness` in every component, in the first `dimension` components.
 TubeForm tubeAbout(const Hypercomplex& from, const Hypercomplex& to, const Hypercomplex& across1,
                    const Hypercomplex& across2, double thickness, int dimension);
+// evaluateOnSegment for a tube; and whether the tube holds the point at these e (tests).
+TubeForm evaluateOnTube(const FormulaProgram& program, const MultiplicationTable& table,
+                        const TubeForm& form);
+bool tubeContains(const TubeForm& form, const std::array<double, TubeForm::kSymbols>& e,
+                  const Hypercomplex& point, int dimension);
 // segmentLeavesBall for a tube.
 bool tubeLeavesBall(const FormulaProgram& program, const MultiplicationTable& table,
                     const TubeForm& form, int maxIterations, double bailout);
