@@ -110,7 +110,7 @@ inline constexpr int64_t kFirstSpan = 64, kLongestSpan = 1024;
 // Runs this short are tested sample by sample rather than proven: a proof of a run costs about
 // as much as 16 orbits in the lanes (coquaternion z^2 + c), and fails near the surface.
 // Measured on the default coquaternion scene at 480x270: 8 to 32 samples within 3% of each
-// other, 64 9% slower (docs/benchmarks.md, "Samples tested in lanes").
+// other, 64 9% slower (docs/benchmarks.md, "Samples tested in lanes, squares by symmetry").
 inline constexpr int64_t kTestedSpan = 16;
 // The length of the next run to prove, in samples: doubled after two proofs in a row, up to
 // kLongestSpan, and halved after a failure (a ray's runs here, a block's cone's in
