@@ -20,6 +20,7 @@
 // their multiplication table (evaluateInAlgebra, below).
 #pragma once
 
+#include <array>
 #include <complex>
 #include <cstdint>
 #include <utility>
@@ -109,6 +110,11 @@ Hypercomplex evaluateInAlgebra(const FormulaProgram& program, const Multiplicati
 std::pair<Hypercomplex, Hypercomplex> evaluateInAlgebraWithDerivative(
     const FormulaProgram& program, const MultiplicationTable& table, const Hypercomplex& z,
     const Hypercomplex& h);
+// The same along three directions at once (the normal's tangents): p(z) computed once, each
+// derivative bit for bit evaluateInAlgebraWithDerivative's.
+std::pair<Hypercomplex, std::array<Hypercomplex, 3>> evaluateInAlgebraWithDerivatives(
+    const FormulaProgram& program, const MultiplicationTable& table, const Hypercomplex& z,
+    const std::array<Hypercomplex, 3>& h);
 
 // f(w) on std::complex's principal branch: what a bicomplex program's kFunction applies to each
 // duplex component (without the derivative, which would double the cost of sin and cos).

@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <tuple>
+#include <vector>
 
 #include "quaternia/algebra/formula_program.h"
 #include "quaternia/algebra/formula_tree.h"
@@ -66,67 +68,82 @@ Hypercomplex linearMap(const double* m, const Hypercomplex& a) {
     return q;
 }
 
-// Runs the program into the registers `value` (and `slope`, the derivative in direction h,
-// where kSlope).
-template <bool kSlope>
+// Runs the program into the registers `value` and, for S > 0, `slope` (register n's derivative
+// in direction h[s] at slope[n * S + s]). Each direction's derivative takes the same operations
+// whatever S is, so S directions at once give each the bits of S = 1.
+template <int S>
 void run(const FormulaProgram& program, const MultiplicationTable& table, const Hypercomplex& z,
-         const Hypercomplex& h, Hypercomplex* value, Hypercomplex* slope) {
+         const Hypercomplex* h, Hypercomplex* value, Hypercomplex* slope) {
     const std::vector<Instruction>& code = program.instructions();
     const Hypercomplex* constants = program.elements().data();
     const double* factors = program.factors().data();
     for (std::size_t n = 0; n < code.size(); ++n) {
         const Instruction& i = code[n];
         const std::size_t a = std::size_t(i.a), b = std::size_t(i.b);
+        Hypercomplex* out = slope + n * S;
+        const Hypercomplex* slopeA = slope + a * S;
+        const Hypercomplex* slopeB = slope + b * S;
         switch (i.op) {
             case Op::kZ:
                 value[n] = z;
-                if constexpr (kSlope) slope[n] = h;
+                for (int s = 0; s < S; ++s)
+                    out[s] = h[s];
                 break;
             case Op::kConstant:
                 value[n] = constants[i.index];
-                if constexpr (kSlope) slope[n] = Hypercomplex{};
+                for (int s = 0; s < S; ++s)
+                    out[s] = Hypercomplex{};
                 break;
             case Op::kAdd:
                 value[n] = value[a] + value[b];
-                if constexpr (kSlope) slope[n] = slope[a] + slope[b];
+                for (int s = 0; s < S; ++s)
+                    out[s] = slopeA[s] + slopeB[s];
                 break;
             case Op::kSubtract:
                 value[n] = value[a] - value[b];
-                if constexpr (kSlope) slope[n] = slope[a] - slope[b];
+                for (int s = 0; s < S; ++s)
+                    out[s] = slopeA[s] - slopeB[s];
                 break;
             case Op::kNegate:
                 value[n] = negated(value[a]);
-                if constexpr (kSlope) slope[n] = negated(slope[a]);
+                for (int s = 0; s < S; ++s)
+                    out[s] = negated(slopeA[s]);
                 break;
             case Op::kMultiply:
             case Op::kSquare: {
                 // d(uv) = du v + u dv, in the order written.
                 const std::size_t right = i.op == Op::kSquare ? a : b;
-                if constexpr (kSlope)
-                    slope[n] = table.multiply(slope[a], value[right]) +
-                               table.multiply(value[a], slope[right]);
+                const Hypercomplex* slopeRight = slope + right * S;
+                for (int s = 0; s < S; ++s)
+                    out[s] = table.multiply(slopeA[s], value[right]) +
+                             table.multiply(value[a], slopeRight[s]);
                 value[n] = table.multiply(value[a], value[right]);
                 break;
             }
             case Op::kScale:
                 value[n] = factors[i.index] * value[a];
-                if constexpr (kSlope) slope[n] = factors[i.index] * slope[a];
+                for (int s = 0; s < S; ++s)
+                    out[s] = factors[i.index] * slopeA[s];
                 break;
             case Op::kLinear:
                 value[n] = linearMap(factors + i.index, value[a]);
-                if constexpr (kSlope) slope[n] = linearMap(factors + i.index, slope[a]);
+                for (int s = 0; s < S; ++s)
+                    out[s] = linearMap(factors + i.index, slopeA[s]);
                 break;
             case Op::kPower: {
                 // x^e = x (x (... x)), the derivative by the product rule at each factor.
-                Hypercomplex power = realElement(1), powerSlope{};
+                Hypercomplex power = realElement(1);
+                std::array<Hypercomplex, std::size_t(S > 0 ? S : 1)> powerSlope{};
                 for (int e = 0; e < i.index; ++e) {
-                    if constexpr (kSlope)
-                        powerSlope =
-                            table.multiply(slope[a], power) + table.multiply(value[a], powerSlope);
+                    for (int s = 0; s < S; ++s)
+                        powerSlope[std::size_t(s)] =
+                            table.multiply(slopeA[s], power) +
+                            table.multiply(value[a], powerSlope[std::size_t(s)]);
                     power = e == 0 ? value[a] : table.multiply(value[a], power);
                 }
                 value[n] = power;
-                if constexpr (kSlope) slope[n] = powerSlope;
+                for (int s = 0; s < S; ++s)
+                    out[s] = powerSlope[std::size_t(s)];
                 break;
             }
             case Op::kFunction:
@@ -134,26 +151,26 @@ void run(const FormulaProgram& program, const MultiplicationTable& table, const 
                 // The duplex form: f applied to each complex component, and the chain rule
                 // f'(A) dA likewise.
                 const auto w = duplexForm(value[a]);
-                const auto dw = kSlope ? duplexForm(slope[a]) : std::array<Complex, 2>{};
                 const double exponent = i.op == Op::kRealPower ? factors[i.index] : 0;
-                std::array<Complex, 2> f, df;
+                std::array<Complex, 2> f, derivative;
                 for (std::size_t k = 0; k < 2; ++k) {
-                    if constexpr (!kSlope) {
+                    if constexpr (S == 0) {
                         // The value alone: the derivative would double the cost of sin and cos.
                         f[k] = i.op == Op::kFunction
                                    ? complexFunctionValue(FormulaFunction(i.index), w[k])
                                    : std::pow(w[k], exponent);
                         continue;
                     }
-                    const auto [fk, derivative] =
+                    std::tie(f[k], derivative[k]) =
                         i.op == Op::kFunction ? complexFunction(FormulaFunction(i.index), w[k])
                                               : std::pair{std::pow(w[k], exponent),
                                                           exponent * std::pow(w[k], exponent - 1)};
-                    f[k] = fk;
-                    df[k] = derivative * dw[k];
                 }
                 value[n] = fromDuplexForm(f[0], f[1]);
-                if constexpr (kSlope) slope[n] = fromDuplexForm(df[0], df[1]);
+                for (int s = 0; s < S; ++s) {
+                    const auto dw = duplexForm(slopeA[s]);
+                    out[s] = fromDuplexForm(derivative[0] * dw[0], derivative[1] * dw[1]);
+                }
                 break;
             }
         }
@@ -203,27 +220,48 @@ Hypercomplex evaluateInAlgebra(const FormulaProgram& program, const Multiplicati
     if (program.algebra() == Algebra::kQuaternion)
         return elementOf(program.evaluate(quaternionOf(z)));
     Registers value(program.instructions().size());
-    run<false>(program, table, z, z, value.data(), nullptr);
+    run<0>(program, table, z, nullptr, value.data(), nullptr);
     return value.data()[program.result()];
+}
+
+template <int S>
+std::pair<Hypercomplex, std::array<Hypercomplex, S>> evaluateWithDerivatives(
+    const FormulaProgram& program, const MultiplicationTable& table, const Hypercomplex& z,
+    const std::array<Hypercomplex, S>& h) {
+    const std::size_t size = program.instructions().size();
+    std::array<Hypercomplex, S> derivatives;
+    if (program.algebra() == Algebra::kQuaternion) {
+        std::vector<Quaternion> registers(size), tangents(size * S);
+        Quaternion direction[S], derivative[S];
+        for (std::size_t s = 0; s < S; ++s)
+            direction[s] = quaternionOf(h[s]);
+        const Quaternion p = runProgramWithTangents<S>(
+            program.instructions(), program.result(), quaternionOf(z), direction, Quaternion(0),
+            program.constants().data(), program.factors().data(), registers.data(), tangents.data(),
+            derivative);
+        for (std::size_t s = 0; s < S; ++s)
+            derivatives[s] = elementOf(derivative[s]);
+        return {elementOf(p), derivatives};
+    }
+    Registers value(size);
+    std::vector<Hypercomplex> slope(size * S);
+    run<S>(program, table, z, h.data(), value.data(), slope.data());
+    for (std::size_t s = 0; s < S; ++s)
+        derivatives[s] = slope[std::size_t(program.result()) * S + s];
+    return {value.data()[program.result()], derivatives};
 }
 
 std::pair<Hypercomplex, Hypercomplex> evaluateInAlgebraWithDerivative(
     const FormulaProgram& program, const MultiplicationTable& table, const Hypercomplex& z,
     const Hypercomplex& h) {
-    if (program.algebra() == Algebra::kQuaternion) {
-        std::vector<Quaternion> registers(program.instructions().size()),
-            tangents(program.instructions().size());
-        const Quaternion direction[1] = {quaternionOf(h)};
-        Quaternion derivative[1];
-        const Quaternion p = runProgramWithTangents<1>(
-            program.instructions(), program.result(), quaternionOf(z), direction, Quaternion(0),
-            program.constants().data(), program.factors().data(), registers.data(), tangents.data(),
-            derivative);
-        return {elementOf(p), elementOf(derivative[0])};
-    }
-    Registers value(program.instructions().size()), slope(program.instructions().size());
-    run<true>(program, table, z, h, value.data(), slope.data());
-    return {value.data()[program.result()], slope.data()[program.result()]};
+    const auto [p, derivative] = evaluateWithDerivatives<1>(program, table, z, {h});
+    return {p, derivative[0]};
+}
+
+std::pair<Hypercomplex, std::array<Hypercomplex, 3>> evaluateInAlgebraWithDerivatives(
+    const FormulaProgram& program, const MultiplicationTable& table, const Hypercomplex& z,
+    const std::array<Hypercomplex, 3>& h) {
+    return evaluateWithDerivatives<3>(program, table, z, h);
 }
 
 }  // namespace quaternia

@@ -42,6 +42,11 @@ class HypercomplexFormula {
                                                                  const Hypercomplex& h) const {
         return evaluateInAlgebraWithDerivative(program_, *table_, z, h);
     }
+    // The same along three directions, p(z) computed once.
+    std::pair<Hypercomplex, std::array<Hypercomplex, 3>> evaluateWithDerivatives(
+        const Hypercomplex& z, const std::array<Hypercomplex, 3>& h) const {
+        return evaluateInAlgebraWithDerivatives(program_, *table_, z, h);
+    }
 
     // The analysis of program_bounds.h, whose comments say what each means.
     bool transcendental() const { return bounds_.transcendental; }

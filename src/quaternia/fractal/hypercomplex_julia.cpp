@@ -392,12 +392,8 @@ std::array<double, 3> HypercomplexJuliaSet::potentialGradient(
     Hypercomplex z = z0;
     std::array<Hypercomplex, 3> t = tangents;
     for (int n = 0; n < iterations; ++n) {
-        Hypercomplex next{};
-        for (auto& tangent : t) {
-            auto [value, slope] = formula_.evaluateWithDerivative(z, tangent);
-            tangent = slope;
-            next = value;
-        }
+        const auto [next, slopes] = formula_.evaluateWithDerivatives(z, t);
+        t = slopes;
         if (!std::isfinite(normSquared(next))) break;
         z = next;
         const double largest = std::max({normSquared(t[0]), normSquared(t[1]), normSquared(t[2])});
