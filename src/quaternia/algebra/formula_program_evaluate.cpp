@@ -80,9 +80,11 @@ void run(const FormulaProgram& program, const MultiplicationTable& table, const 
     for (std::size_t n = 0; n < code.size(); ++n) {
         const Instruction& i = code[n];
         const std::size_t a = std::size_t(i.a), b = std::size_t(i.b);
+        // Operands an instruction lacks are -1: their slopes are never read, and their
+        // addresses are not formed.
         Hypercomplex* out = slope + n * S;
-        const Hypercomplex* slopeA = slope + a * S;
-        const Hypercomplex* slopeB = slope + b * S;
+        const Hypercomplex* slopeA = i.a >= 0 ? slope + a * S : slope;
+        const Hypercomplex* slopeB = i.b >= 0 ? slope + b * S : slope;
         switch (i.op) {
             case Op::kZ:
                 value[n] = z;
@@ -113,7 +115,7 @@ void run(const FormulaProgram& program, const MultiplicationTable& table, const 
             case Op::kSquare: {
                 // d(uv) = du v + u dv, in the order written.
                 const std::size_t right = i.op == Op::kSquare ? a : b;
-                const Hypercomplex* slopeRight = slope + right * S;
+                const Hypercomplex* slopeRight = i.op == Op::kSquare ? slopeA : slopeB;
                 for (int s = 0; s < S; ++s)
                     out[s] = table.multiply(slopeA[s], value[right]) +
                              table.multiply(value[a], slopeRight[s]);
