@@ -14,9 +14,6 @@
 
 namespace quaternia {
 
-// Points per batch.
-inline constexpr int kOrbitBatch = 8;
-
 // Whether firstInsideOfBatch takes the program: table arithmetic (not the quaternion
 // programs, which evaluateInAlgebra runs through runProgram), no functions or real powers.
 bool batchesOrbits(const FormulaProgram& program);

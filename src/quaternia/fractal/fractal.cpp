@@ -1,8 +1,7 @@
 #include "quaternia/fractal/fractal.h"
 
-#include "quaternia/algebra/orbit_batch.h"
-
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <vector>

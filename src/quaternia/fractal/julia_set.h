@@ -42,8 +42,8 @@ class JuliaSet {
     // certified maps of DuplexEscapeMaps): the reference the fast answers are tested against.
     virtual bool containsByOrbit(const Hypercomplex& z0) const { return contains(z0); }
     // The index of the first of points[0 .. count) that contains() takes, or count if none: each
-    // decided as contains() decides it. Sets whose orbits run in batches (algebra/orbit_batch.h)
-    // test up to kOrbitBatch points at once.
+    // decided as contains() decides it. Sets whose orbits run in lanes (algebra/orbit_batch.h)
+    // test several points at once.
     virtual int firstInside(const Hypercomplex* points, int count) const {
         for (int i = 0; i < count; ++i)
             if (contains(points[i])) return i;
