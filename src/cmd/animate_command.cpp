@@ -52,7 +52,7 @@ void requireFilmMemory(const Scene& film, FrameRange range, bool video, int fram
                        const AnimateCommandOptions& options) {
     const FilmMemory memory = filmMemory(film, range, video, framesInFlight);
     requireImageMemory(memory.largestFrame, memory.bytes, options, "the film (frames in flight)");
-    requireEnvironment(film, options);
+    requireSceneTables(film, options);
 }
 
 void printFilmSummary(const AnimateCommandOptions& options, const Scene& film, int64_t count,

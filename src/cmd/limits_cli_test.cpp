@@ -168,6 +168,30 @@ TEST_F(LimitsCli, EstimatesBoundWhatTheCommandsTake) {
     }
 }
 
+TEST_F(LimitsCli, BicomplexEscapeMapsAreCountedBeforeWork) {
+    // sin(z) + c builds its duplex components' escape maps (fractal/duplex_escape_map.h) in the
+    // render, tens of MiB whatever the image: a budget the tiny image fits but the maps do not
+    // is refused naming fractal.formula, before any work, no file written.
+    const std::string bicomplex =
+        kTiny + " --set 'fractal.algebra=\"bicomplex\"' --set 'fractal.formula=\"sin(z) + c\"'";
+    const CommandResult refused = run("render -o " + output() + bicomplex + " --memory-budget 32M");
+    expectRefused(refused, "fractal.formula", "--memory-budget");
+    EXPECT_FALSE(fs::exists(output()));
+    // The quaternion scene at that budget is not refused.
+    EXPECT_EQ(run("render -o " + output() + kTiny + " --memory-budget 32M").exitCode, 0);
+    if (kAddressSanitizer) return;  // its shadow memory and redzones
+    // The stated estimate bounds what the maps take beyond the tiny quaternion render, and is
+    // not so loose that it refuses what would fit.
+    const double estimate = estimatedBytes(refused.err);
+    const int64_t base = peakResidentBytes("render -o /dev/null" + kTiny);
+    const int64_t peak = peakResidentBytes("render -o /dev/null" + bicomplex);
+    ASSERT_GT(estimate, 0);
+    ASSERT_GT(base, 0);
+    ASSERT_GT(peak, 0);
+    EXPECT_LE(double(peak - base), estimate);
+    EXPECT_LE(estimate, 3.0 * double(peak - base));
+}
+
 // --- Write failures ---
 
 class WriteFailureCli : public LimitsCli {

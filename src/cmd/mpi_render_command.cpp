@@ -101,7 +101,7 @@ int runMpiRender(const MpiSession& mpi, const RenderCommandOptions& options) {
             posterMemoryBytes(PosterLayout(scene.render.width, scene.render.height),
                               PosterFormat::of(scene, !options.depthOutput.empty()), mpi.size()),
             options, "rank 0's window of bands");
-        requireEnvironment(scene, options);
+        requireSceneTables(scene, options);
         if (mpi.rank() != 0) return;
         output.emplace(options.output);
         if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);

@@ -138,7 +138,7 @@ int runRenderCommand(const RenderCommandOptions& options) {
                            renderPngMemoryBytes(scene, !options.depthOutput.empty()) +
                            (certify ? pixels * (1 + 2 * sizeof(float) + 8 + sizeof(Rgba)) : 0),
                        options, "the render");
-    requireEnvironment(scene, options);
+    requireSceneTables(scene, options);
     AtomicFile output(options.output);
     std::optional<AtomicFile> depthOutput, certifyOutput;
     if (!options.depthOutput.empty()) depthOutput.emplace(options.depthOutput);

@@ -8,6 +8,7 @@
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_file.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia {
@@ -65,8 +66,10 @@ void requireImageMemory(const Scene& scene, uint64_t bytes, const SceneCommandOp
                   "lower render.width and render.height, or set --memory-budget");
 }
 
-void requireEnvironment(const Scene& scene, const SceneCommandOptions& options) {
-    environmentOf(scene, memoryBudgetFromOptions(options));
+void requireSceneTables(const Scene& scene, const SceneCommandOptions& options) {
+    const MemoryBudget budget = memoryBudgetFromOptions(options);
+    environmentOf(scene, budget);
+    requireFractalMemory(scene, budget);
 }
 
 Scene sceneFromOptions(const SceneCommandOptions& options) {

@@ -58,7 +58,8 @@ void requireImageMemory(const Scene& scene, uint64_t bytes, const SceneCommandOp
 // Reads the scene's environment map (environment.map) within the budget of --memory-budget,
 // before the work: a missing, unreadable or non-HDR file, one that is not 2:1 or too large is a
 // UserError naming environment.map. The renders then take it from environmentOf's cache.
-void requireEnvironment(const Scene& scene, const SceneCommandOptions& options);
+// With it, the fractal's tables (requireFractalMemory: the bicomplex functions' escape maps).
+void requireSceneTables(const Scene& scene, const SceneCommandOptions& options);
 
 // Where a command's summary goes: standard output, unless one of `outputs` is standard output
 // itself (-o /dev/stdout, or a path to the file or pipe that fd 1 is), where the summary would be

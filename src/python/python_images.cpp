@@ -10,6 +10,7 @@
 #include "quaternia/render/pixel_certificate.h"
 #include "quaternia/render/render.h"
 #include "quaternia/render/render_png.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
 
 namespace quaternia::python {
@@ -83,6 +84,7 @@ py::array renderImage(const Scene& scene, std::optional<int64_t> width,
                        memoryBudget, workers);
     // The environment map read (and checked) here, before the work: ValueError, MemoryError.
     environmentOf(s, memoryBudgetOf(memoryBudget, workers));
+    requireFractalMemory(s, memoryBudgetOf(memoryBudget, workers));
     RenderResult result = renderOf(s, workers, progress, linear);
     if (linear) {
         const py::ssize_t w = s.render.width, h = s.render.height;
@@ -102,6 +104,7 @@ py::dict renderPasses(const Scene& scene, std::optional<int64_t> width,
                        memoryBudget, workers);
     // The environment map read (and checked) here, before the work: ValueError, MemoryError.
     environmentOf(s, memoryBudgetOf(memoryBudget, workers));
+    requireFractalMemory(s, memoryBudgetOf(memoryBudget, workers));
     RenderResult result = renderOf(s, workers, progress, true);
     const py::ssize_t w = s.render.width, h = s.render.height;
     py::dict passes;
@@ -122,6 +125,7 @@ py::dict certifyImage(const Scene& scene, std::optional<int64_t> width,
     const int workers = threadsOf(threads);
     const uint64_t pixels = uint64_t(s.render.width) * uint64_t(s.render.height);
     requireImageMemory(s, pixels * (1 + 2 * sizeof(float)), memoryBudget, workers);
+    requireFractalMemory(s, memoryBudgetOf(memoryBudget, workers));
     PixelCertificate c = runWithoutGil(
         workers, progress, [&](const WorkOptions& work) { return certifyPixels(s, work); });
     const py::ssize_t w = s.render.width, h = s.render.height;

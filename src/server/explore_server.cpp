@@ -17,6 +17,7 @@
 #include "quaternia/scene/animation.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/scene_file.h"
+#include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
 #include "quaternia/util/memory_budget.h"
 #include "server/explore_connections.h"
@@ -143,6 +144,7 @@ bool answerRender(ExploreServer::State& state, const std::string& slot, const Sc
     requireImageMemory(
         state, scene,
         renderPngMemoryBytes(scene, false) + (certify ? pixels * (1 + 2 * sizeof(float)) : 0));
+    requireFractalMemory(scene, renderShare(state));
     RenderResult result;
     PixelCertificate certificate;
     bool done = runInSlot(state, slot, response, [&](const WorkOptions& w) {

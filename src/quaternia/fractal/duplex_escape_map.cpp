@@ -184,6 +184,16 @@ bool DuplexEscapeMap::outside(Complex w) const {
     return cell < 0 ? std::isfinite(std::norm(w)) : outside_[size_t(cell)] > 0;
 }
 
+namespace {
+constexpr size_t kCachedMaps = 4;  // at most 8 MB each at the default level
+}  // namespace
+
+uint64_t DuplexEscapeMap::peakBytes(int finestLevel) {
+    const uint64_t cells = uint64_t(1) << (2 * finestLevel);
+    const uint64_t building = cells * (sizeof(uint16_t) + 2 * sizeof(float));
+    return 2 * building + (kCachedMaps - 2) * cells * sizeof(uint16_t);
+}
+
 std::shared_ptr<const DuplexEscapeMap> DuplexEscapeMap::shared(
     const DuplexComponentProgram& program, int maxIterations, double bailout, int finestLevel) {
     struct Entry {
@@ -192,7 +202,6 @@ std::shared_ptr<const DuplexEscapeMap> DuplexEscapeMap::shared(
     };
     static std::mutex mutex;
     static std::vector<Entry> cache;  // the most recently used first
-    constexpr size_t kCached = 4;     // at most 8 MB each at the default level
     std::vector<double> key = program.signature();
     key.insert(key.end(), {double(maxIterations), bailout, double(finestLevel)});
     {
@@ -210,7 +219,7 @@ std::shared_ptr<const DuplexEscapeMap> DuplexEscapeMap::shared(
         std::make_shared<const DuplexEscapeMap>(program, maxIterations, bailout, finestLevel);
     const std::lock_guard<std::mutex> lock(mutex);
     cache.insert(cache.begin(), Entry{std::move(key), map});
-    if (cache.size() > kCached) cache.pop_back();
+    if (cache.size() > kCachedMaps) cache.pop_back();
     return map;
 }
 

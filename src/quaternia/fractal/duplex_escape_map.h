@@ -54,6 +54,10 @@ class DuplexEscapeMap {
     static std::shared_ptr<const DuplexEscapeMap> shared(const DuplexComponentProgram& program,
                                                          int maxIterations, double bailout,
                                                          int finestLevel);
+    // The most memory the maps take while a scene's pair is built at `finestLevel`: two planes
+    // at once, each with its clearances (2 bytes a cell) and the distance transform's two
+    // grids of floats, beside the cache's other maps (2 bytes a cell each).
+    static uint64_t peakBytes(int finestLevel);
 
   private:
     enum class Verdict { kOutside, kBounded, kUndecided };

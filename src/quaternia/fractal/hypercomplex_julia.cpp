@@ -174,6 +174,10 @@ DistanceEstimate HypercomplexJuliaSet::estimate(const Hypercomplex& z0) const {
     return multiplicativeEstimate(z0);
 }
 
+uint64_t HypercomplexJuliaSet::tableBytes() const {
+    return duplexPrograms_ ? DuplexEscapeMap::peakBytes(kEscapeMapLevel) : 0;
+}
+
 const DuplexEscapeMaps& HypercomplexJuliaSet::escapeMaps() const {
     std::call_once(escapeMapsBuilt_, [&] {
         escapeMaps_ = std::make_shared<const DuplexEscapeMaps>(*duplexPrograms_, maxIterations_,

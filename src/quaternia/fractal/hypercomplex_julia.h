@@ -58,6 +58,7 @@ class HypercomplexJuliaSet final : public JuliaSet {
     // form).
     int firstInside(const Hypercomplex* points, int count) const override;
     bool hasClearance() const override { return duplexPrograms_.has_value(); }
+    uint64_t tableBytes() const override;
     double clearance(const Hypercomplex& z0) const override;
     // ln|z_M| after exactly M iterations (or where it overflows), and the M the normal takes at
     // z0: the iterate where the estimate was taken or the escape iteration, at most N - 1, as

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -88,6 +89,11 @@ class JuliaSet {
     // proven by iterating the ball about that box (interval/ball_form.h), then the box
     // (interval/interval_element.h, boxStaysInBall); false proves nothing.
     bool includesBox(const Hypercomplex& centre, double radius) const;
+
+    // The memory the set's tables take at most while they are built, lazily, by the first render
+    // that asks (the bicomplex functions' escape maps): for the commands to check against their
+    // budget before the work starts.
+    virtual uint64_t tableBytes() const { return 0; }
 
     virtual int maxIterations() const = 0;
     // Membership radius: K_N lies in the ball of this radius.

@@ -15,6 +15,15 @@ Fractal fractalFromScene(const Scene& scene) {
     return Fractal::fromSettings(scene.fractal, scene.slice, paths);
 }
 
+void requireFractalMemory(const Scene& scene, const MemoryBudget& budget) {
+    const uint64_t bytes = fractalFromScene(scene).set().tableBytes();
+    if (bytes == 0) return;
+    requireMemory(bytes, budget, "fractal.formula",
+                  "fractal.formula = \"" + scene.fractal.formula +
+                      "\": building the certified escape maps of its two duplex components",
+                  "the maps' size does not depend on the image; raise the memory budget");
+}
+
 Fractal hypercomplexFractalFromScene(const Scene& scene) {
     auto set = hypercomplexJuliaSetOf(scene.fractal);  // the formula and bailout first
     return Fractal(std::move(set), Slice(scene.slice, scene.fractal.algebra));

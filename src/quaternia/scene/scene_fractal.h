@@ -11,6 +11,7 @@
 #include "quaternia/fractal/fractal.h"
 #include "quaternia/fractal/hypercomplex_julia.h"
 #include "quaternia/scene/scene.h"
+#include "quaternia/util/memory_budget.h"
 
 namespace quaternia {
 
@@ -20,6 +21,11 @@ Fractal fractalFromScene(const Scene& scene);
 // quaternions too), never folded, with its slice: what the commands that work in the algebra
 // itself take (orbits, planes of the other algebras).
 Fractal hypercomplexFractalFromScene(const Scene& scene);
+
+// Refuses, with a MemoryLimitError naming fractal.formula, a scene whose set's tables
+// (JuliaSet::tableBytes: the bicomplex functions' escape maps, built by the first render) need
+// more than `budget`; checked, like the environment map, on its own beside the image's buffers.
+void requireFractalMemory(const Scene& scene, const MemoryBudget& budget);
 
 // fractal.c with all of the algebra's components (those past its dimension 0), and the same as
 // the list of its 4 or 8 components (how the commands' JSON writes it).
