@@ -172,11 +172,21 @@ TEST_F(LimitsCli, BicomplexEscapeMapsAreCountedBeforeWork) {
     // sin(z) + c builds its duplex components' escape maps (fractal/duplex_escape_map.h) in the
     // render, tens of MiB whatever the image: a budget the tiny image fits but the maps do not
     // is refused naming fractal.formula, before any work, no file written.
-    const std::string bicomplex =
-        kTiny + " --set 'fractal.algebra=\"bicomplex\"' --set 'fractal.formula=\"sin(z) + c\"'";
+    const std::string sine =
+        " --set 'fractal.algebra=\"bicomplex\"' --set 'fractal.formula=\"sin(z) + c\"'";
+    const std::string bicomplex = kTiny + sine;
     const CommandResult refused = run("render -o " + output() + bicomplex + " --memory-budget 32M");
     expectRefused(refused, "fractal.formula", "--memory-budget");
     EXPECT_FALSE(fs::exists(output()));
+    // The plane and the mesh test membership through the same maps.
+    expectRefused(run("plane -o " + output() + bicomplex +
+                      " --set 'plane.kind=\"slice\"' --memory-budget 32M"),
+                  "fractal.formula", "--memory-budget");
+    expectRefused(run("mesh --resolution 16 --threads 2 -o " + output("out.stl") + sine +
+                      " --memory-budget 32M"),
+                  "fractal.formula", "--memory-budget");
+    EXPECT_FALSE(fs::exists(output()));
+    EXPECT_FALSE(fs::exists(output("out.stl")));
     // The quaternion scene at that budget is not refused.
     EXPECT_EQ(run("render -o " + output() + kTiny + " --memory-budget 32M").exitCode, 0);
     if (kAddressSanitizer) return;  // its shadow memory and redzones

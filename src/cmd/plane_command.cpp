@@ -126,6 +126,7 @@ int runPlaneCommand(const PlaneCommandOptions& options) {
     requireImageMemory(
         scene, planeMemoryBytes(scene) + (certify ? pixels + pngBytesBound(classesFormat) : 0),
         options, "the image");
+    requireFractalMemory(scene, memoryBudgetFromOptions(options));
     AtomicFile output(options.output);
     std::optional<AtomicFile> classesOutput;
     if (certify) classesOutput.emplace(options.certify);

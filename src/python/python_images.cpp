@@ -152,6 +152,7 @@ py::tuple planeImage(const Scene& scene, const std::optional<std::string>& kind,
     validatePlaneScene(s);
     const int workers = threadsOf(threads);
     requireImageMemory(s, planeMemoryBytes(s), memoryBudget, workers);
+    requireFractalMemory(s, memoryBudgetOf(memoryBudget, workers));
     PlaneImage plane = runWithoutGil(workers, progress,
                                      [&](const WorkOptions& work) { return renderPlane(s, work); });
     const py::ssize_t w = s.render.width, h = s.render.height;
