@@ -266,7 +266,7 @@ MeshResult meshScene(const Scene& scene, const MeshOptions& options) {
     auto start = std::chrono::steady_clock::now();
     validateScene(scene);
     Fractal fractal = fractalFromScene(scene);
-    requireFractalMemory(scene, options.memory);  // the escape maps its membership tests build
+    requireFractalMemory(scene, fractal, options.memory);  // the maps its membership tests build
     MeshResult result;
     MeshStats& stats = result.stats;
     stats.threads = resolveThreadCount(options.threads);

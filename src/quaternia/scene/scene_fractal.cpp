@@ -15,13 +15,17 @@ Fractal fractalFromScene(const Scene& scene) {
     return Fractal::fromSettings(scene.fractal, scene.slice, paths);
 }
 
-void requireFractalMemory(const Scene& scene, const MemoryBudget& budget) {
-    const uint64_t bytes = fractalFromScene(scene).set().tableBytes();
+void requireFractalMemory(const Scene& scene, const Fractal& fractal, const MemoryBudget& budget) {
+    const uint64_t bytes = fractal.set().tableBytes();
     if (bytes == 0) return;
     requireMemory(bytes, budget, "fractal.formula",
                   "fractal.formula = \"" + scene.fractal.formula +
                       "\": building the certified escape maps of its two duplex components",
                   "the maps' size does not depend on the image; raise the memory budget");
+}
+
+void requireFractalMemory(const Scene& scene, const MemoryBudget& budget) {
+    requireFractalMemory(scene, fractalFromScene(scene), budget);
 }
 
 Fractal hypercomplexFractalFromScene(const Scene& scene) {

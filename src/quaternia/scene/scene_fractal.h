@@ -25,6 +25,8 @@ Fractal hypercomplexFractalFromScene(const Scene& scene);
 // Refuses, with a MemoryLimitError naming fractal.formula, a scene whose set's tables
 // (JuliaSet::tableBytes: the bicomplex functions' escape maps, built by the first render) need
 // more than `budget`; checked, like the environment map, on its own beside the image's buffers.
+// The fractal already built from the scene (fractalFromScene), or built here.
+void requireFractalMemory(const Scene& scene, const Fractal& fractal, const MemoryBudget& budget);
 void requireFractalMemory(const Scene& scene, const MemoryBudget& budget);
 
 // fractal.c with all of the algebra's components (those past its dimension 0), and the same as
