@@ -12,6 +12,8 @@
 #include <sstream>
 #include <string>
 
+#include "quaternia/util/test_scratch_path.h"
+
 namespace quaternia::testing {
 
 namespace fs = std::filesystem;
@@ -31,9 +33,9 @@ inline std::string readFile(const fs::path& path) {
 class CliFixture : public ::testing::Test {
   protected:
     void SetUp() override {
-        dir_ = fs::path(::testing::TempDir()) /
-               ("quaternia_cli_" +
-                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = scratchPath("quaternia_cli_" + std::string(test->test_suite_name()) + "_" +
+                           test->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }

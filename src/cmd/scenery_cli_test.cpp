@@ -58,7 +58,7 @@ TEST_F(SceneryCli, ScalarEngineRendersTheLooks) {
 // An environment map that cannot be used (issue 39): one line naming environment.map and the
 // file, exit 2, nothing written, before the render. A good one renders.
 TEST_F(SceneryCli, BadEnvironmentMapsAreOneLine) {
-    const fs::path maps = fs::path(::testing::TempDir()) / "quaternia_environment_maps";
+    const fs::path maps = testing::scratchPath("quaternia_environment_maps");
     fs::create_directories(maps);
     auto writeMap = [&](const std::string& name, int width, int height) {
         AtomicFile file((maps / name).string());
@@ -87,6 +87,7 @@ TEST_F(SceneryCli, BadEnvironmentMapsAreOneLine) {
                     "no such file");
     const CommandResult r = run(renderWith(big));
     EXPECT_EQ(r.exitCode, 0) << r.err;
+    fs::remove_all(maps);
 }
 
 }  // namespace

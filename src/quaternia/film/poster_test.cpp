@@ -14,6 +14,7 @@
 #include "quaternia/render/render_png.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/scene/test_scenes.h"
+#include "quaternia/util/test_scratch_path.h"
 
 namespace quaternia {
 namespace {
@@ -52,7 +53,7 @@ TEST(Poster, AssembledFromUnitsInAnyOrderIsTheRendersPng) {
         int bitDepth;
         bool fillFrame;
     };
-    const fs::path dir = fs::temp_directory_path() / "quaternia_poster_test";
+    const fs::path dir = testing::scratchPath("quaternia_poster_test");
     fs::create_directories(dir);
     for (const Case& c : {Case{AlphaMode::Opaque, 8, false}, Case{AlphaMode::Coverage, 16, false},
                           Case{AlphaMode::Coverage, 8, true}}) {

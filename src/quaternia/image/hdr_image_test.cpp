@@ -20,6 +20,7 @@
 
 #include "quaternia/image/exr_writer.h"
 #include "quaternia/util/error.h"
+#include "quaternia/util/test_scratch_path.h"
 
 namespace quaternia {
 namespace {
@@ -285,7 +286,7 @@ TEST(HdrImage, MemoryBudgetTooSmall) {
 
 TEST(HdrImage, ReadsFilesAndNamesWhatIsWrong) {
     namespace fs = std::filesystem;
-    const fs::path directory = fs::path(::testing::TempDir()) / "hdr_image_test";
+    const fs::path directory = testing::scratchPath("hdr_image_test");
     fs::create_directories(directory);
     const std::string path = (directory / "sky.hdr").string();
     const HdrImage image = randomImage(16, 2, 8);

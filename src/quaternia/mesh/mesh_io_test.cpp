@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "quaternia/algebra/test_helpers.h"
+#include "quaternia/util/test_scratch_path.h"
 
 namespace quaternia {
 namespace {
@@ -27,7 +28,7 @@ Mesh tetrahedron() {
 }
 
 std::string written(const Mesh& mesh, const std::string& name) {
-    fs::path path = fs::path(::testing::TempDir()) / name;
+    fs::path path = testing::scratchPath(name);
     AtomicFile file(path.string());
     writeMesh(mesh, meshFormatFromPath(path.string()), file);
     file.commit(false);

@@ -15,6 +15,7 @@
 #include "quaternia/mesh/mesher.h"
 #include "quaternia/render/render.h"
 #include "quaternia/scene/test_scenes.h"
+#include "quaternia/util/test_scratch_path.h"
 
 namespace quaternia {
 namespace {
@@ -73,7 +74,7 @@ TEST_P(MeshReference, ClosedManifoldAndAdmeshAgrees) {
 
     if (!fs::exists("/usr/bin/admesh") && std::system("command -v admesh >/dev/null") != 0)
         GTEST_SKIP() << "admesh is not installed (scripts/install-deps.sh installs it)";
-    fs::path stl = fs::path(::testing::TempDir()) / (id + "_mesh.stl");
+    fs::path stl = testing::scratchPath(id + "_mesh.stl");
     {
         AtomicFile file(stl.string());
         writeMesh(result.mesh, MeshFormat::Stl, file);

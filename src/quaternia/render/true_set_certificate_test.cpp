@@ -20,6 +20,7 @@
 #include "quaternia/scene/presets.h"
 #include "quaternia/scene/scene_fractal.h"
 #include "quaternia/util/error.h"
+#include "quaternia/util/test_scratch_path.h"
 
 namespace quaternia {
 namespace {
@@ -125,8 +126,7 @@ TEST(TrueSetCertificate, DustHasNoHit) {
 }
 
 TEST(TrueSetCertificate, FileMustCertifyTheScene) {
-    const std::string path =
-        (std::filesystem::temp_directory_path() / "quaternia-true-set-test.qcells").string();
+    const std::string path = testing::scratchPath("quaternia-true-set-test.qcells").string();
     Scene scene = sceneWith({{"fractal.c", std::vector<double>{-0.2, 0.3, 0, 0}}}, 16, 9);
     {
         const SetCertification certified = certifySet(scene, 32, {});
