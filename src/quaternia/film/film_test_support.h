@@ -3,12 +3,13 @@
 #pragma once
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "quaternia/util/test_scratch_path.h"
 
 namespace quaternia::film_test {
 
@@ -16,10 +17,9 @@ namespace quaternia::film_test {
 class ScratchDirectory {
   public:
     explicit ScratchDirectory(const std::string& prefix) {
-        path_ = std::filesystem::temp_directory_path() /
-                ("quaternia_" + prefix + "_" +
-                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                 "_" + std::to_string(::getpid()));
+        path_ = quaternia::testing::scratchPath(
+            "quaternia_" + prefix + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
         std::filesystem::remove_all(path_);
         std::filesystem::create_directories(path_);
     }

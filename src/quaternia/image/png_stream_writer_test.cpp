@@ -1,7 +1,6 @@
 #include "quaternia/image/png_stream_writer.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -14,6 +13,7 @@
 
 #include "quaternia/image/png_io.h"
 #include "quaternia/image/png_writer.h"
+#include "quaternia/util/test_scratch_path.h"
 
 namespace quaternia {
 namespace {
@@ -144,9 +144,10 @@ TEST(PngStreamWriter, RefusesWrongRowsAndAnUnfinishedImage) {
 
 // A file in the test's temporary folder, removed at the end.
 struct TempFile {
-    std::string path = ::testing::TempDir() + "quaternia_png_rows_" + std::to_string(::getpid()) +
-                       "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name() +
-                       ".png";
+    std::string path = quaternia::testing::scratchPath(
+                           std::string("quaternia_png_rows_") +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".png")
+                           .string();
     ~TempFile() { std::filesystem::remove(path); }
     void write(const std::vector<uint8_t>& bytes, size_t size) const {
         FILE* file = std::fopen(path.c_str(), "wb");

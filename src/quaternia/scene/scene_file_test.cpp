@@ -4,11 +4,11 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "quaternia/algebra/test_helpers.h"
 #include "quaternia/scene/parameters.h"
 #include "quaternia/util/error.h"
+#include "quaternia/util/test_scratch_path.h"
 
 namespace quaternia {
 namespace {
@@ -34,8 +34,7 @@ void expectSameScene(const Scene& a, const Scene& b) {
 class TemporaryFile {
   public:
     explicit TemporaryFile(const std::string& contents)
-        : path_(std::filesystem::temp_directory_path() /
-                ("quaternia_scene_file_test_" + std::to_string(::getpid()) + ".toml")) {
+        : path_(quaternia::testing::scratchPath("quaternia_scene_file_test.toml")) {
         std::ofstream(path_) << contents;
     }
     ~TemporaryFile() { std::filesystem::remove(path_); }
